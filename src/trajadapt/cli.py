@@ -1,0 +1,270 @@
+"""The ``trajadapt`` command line: thin click commands over the session, backends and log store."""
+
+from __future__ import annotations
+
+import json
+import logging
+from datetime import datetime
+from pathlib import Path
+from typing import Any
+
+import click
+
+from trajadapt.backends.base import Backend
+from trajadapt.backends.registry import backend_class, get_backend, registered_backends
+from trajadapt.case import Case, load_case, load_case_from_parts
+from trajadapt.console import Progress, show_plan, show_result
+from trajadapt.errors import InputError, SessionStateError, TrajadaptError
+from trajadapt.plot import plot_comparison
+from trajadapt.prompts import AXIS_CONVENTIONS
+from trajadapt.results import write_json_atomic
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
+from trajadapt.settings import Settings, load_settings
+from trajadapt.store import Store
+
+
+class TrajadaptGroup(click.Group):
+    """Turns every TrajadaptError into one clear line and exit code 1 (tracebacks with --debug)."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        """Run the command, mapping our errors to click's."""
+        try:
+            return super().invoke(ctx)
+        except TrajadaptError as exc:
+            if ctx.params.get("debug"):
+                raise
+            raise click.ClickException(f"{type(exc).__name__}: {exc}") from exc
+
+
+@click.group(cls=TrajadaptGroup)
+@click.option("--debug", is_flag=True, help="Show tracebacks and debug logging.")
+@click.version_option(package_name="trajadapt")
+def cli(debug: bool) -> None:
+    """Adapt robot trajectories to natural-language instructions.
+
+    An LLM answers an instruction with a numbered plan and Python code; you approve the plan or
+    give feedback; the approved code runs in a sandbox on the trajectory; the result is written
+    as JSON and plotted against the original.
+    """
+    logging.basicConfig(level=logging.DEBUG if debug else logging.WARNING)
+
+
+def _backend_options(pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:
+    return {key: value for key, value in pairs}
+
+
+backend_option = click.option(
+    "--backend", "-b", default=None, help="Backend name (see 'trajadapt backends'); default: local."
+)
+option_option = click.option(
+    "--option", "-o", "options", type=(str, str), multiple=True, metavar="KEY VALUE",
+    help="Backend option, e.g. -o base_url http://127.0.0.1:11434/v1 -o model qwen2.5-coder.",
+)  # fmt: skip
+
+
+@cli.command()
+@click.argument("case_file", required=False, type=click.Path(path_type=Path))
+@click.option("--instruction", "-i", default=None, help="Instruction (replaces the case's own).")
+@click.option(
+    "--trajectory",
+    "trajectory_file",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="Trajectory file (JSON or CSV with columns x,y,z,v) instead of a case file.",
+)
+@click.option(
+    "--scene",
+    "scene_file",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="Scene file with 'objects' (and optional Env_descp, constraints), with --trajectory.",
+)
+@backend_option
+@option_option
+@click.option("--yes", "-y", is_flag=True, help="Approve the first plan without asking.")
+@click.option(
+    "--out",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="Result file (default: ./<case>.result.json).",
+)
+@click.option(
+    "--plot",
+    "plot_file",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="PNG plot of original (blue) vs adapted (red) (default: next to --out).",
+)
+@click.option(
+    "--axes",
+    type=click.Choice(sorted(AXIS_CONVENTIONS)),
+    default=None,
+    help="Coordinate convention stated in the prompt: paper (+X left) or ovita (+X right).",
+)
+@click.option(
+    "--repairs",
+    type=click.IntRange(0, 10),
+    default=None,
+    help="Automatic repair rounds when the code fails (default 2).",
+)
+@click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
+def adapt(
+    case_file: Path | None,
+    instruction: str | None,
+    trajectory_file: Path | None,
+    scene_file: Path | None,
+    backend: str | None,
+    options: tuple[tuple[str, str], ...],
+    yes: bool,
+    out: Path | None,
+    plot_file: Path | None,
+    axes: str | None,
+    repairs: int | None,
+    no_log: bool,
+) -> None:
+    """Adapt the trajectory of CASE_FILE (OVITA case format) to its instruction.
+
+    Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
+    """
+    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs,
+                              "log": False if no_log else None})  # fmt: skip
+    case = _load_case(case_file, trajectory_file, scene_file, instruction)
+    chosen = _make_backend(settings, options)
+    out = out or Path(f"{case.name}.result.json")
+    plot_file = plot_file or out.with_name(out.name.removesuffix(".json").removesuffix(".result") + ".png")
+    result = _run_session(case, chosen, settings, yes)
+    _save(result, out, plot_file, settings)
+    if not result.ok:
+        raise click.exceptions.Exit(1)
+
+
+def _load_case(
+    case_file: Path | None,
+    trajectory_file: Path | None,
+    scene_file: Path | None,
+    instruction: str | None,
+) -> Case:
+    if case_file is not None and trajectory_file is not None:
+        raise InputError("give either a CASE_FILE or --trajectory, not both")
+    if case_file is not None:
+        case = load_case(case_file)
+    elif trajectory_file is not None:
+        case = load_case_from_parts(trajectory_file, scene_file, instruction or "")
+    else:
+        raise InputError("give a CASE_FILE, or --trajectory FILE [--scene FILE] --instruction TEXT")
+    if instruction is not None:
+        case = case.with_instruction(instruction)
+    if not case.instruction:
+        raise InputError(
+            f"{case.source or case.name}: the case has no instruction; give one with --instruction"
+        )
+    return case
+
+
+def _make_backend(settings: Settings, pairs: tuple[tuple[str, str], ...]) -> Backend:
+    options = dict(settings.backend_options) if settings.backend_options else {}
+    options.update(_backend_options(pairs))
+    return get_backend(settings.backend, options)
+
+
+def _run_session(case: Case, backend: Backend, settings: Settings, yes: bool) -> AdaptationResult:
+    store = Store(settings.log_path) if settings.log else None
+    session_settings = SessionSettings(
+        axes=AXIS_CONVENTIONS[settings.axes], repair_attempts=settings.repair_attempts
+    )
+    try:
+        with Sandbox(isolation=settings.isolation) as sandbox, Progress() as progress:  # type: ignore[arg-type]
+            session = AdaptationSession(case, backend, sandbox, session_settings, store, progress.update)
+            click.echo(f"Case {case.name}: {case.instruction}")
+            show_plan(session.draft())
+            while not yes and not _review(session):
+                pass
+            result = session.approve()
+    finally:
+        backend.close()
+        if store is not None:
+            store.close()
+    show_result(result)
+    return result
+
+
+def _review(session: AdaptationSession) -> bool:
+    """Ask approve / feedback / quit once; True when the plan is approved."""
+    choice = click.prompt(
+        "[a]pprove, [f]eedback or [q]uit", type=click.Choice(["a", "f", "q"]), show_choices=False
+    )
+    if choice == "q":
+        raise SessionStateError("quit without approving; nothing was written")
+    if choice == "a":
+        return True
+    text = click.prompt("Feedback on the plan")
+    show_plan(session.feedback(text))
+    return False
+
+
+def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settings) -> None:
+    write_json_atomic(out, result.to_dict())
+    click.echo(f"Result written to {out}")
+    plot_comparison(
+        result.case.trajectory, result.trajectory, result.case.scene, plot_file,
+        AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,
+    )  # fmt: skip
+    click.echo(f"Plot written to {plot_file}")
+
+
+@cli.command()
+@click.option("--check", is_flag=True, help="Also send each configured backend a tiny request.")
+@backend_option
+@option_option
+def backends(check: bool, backend: str | None, options: tuple[tuple[str, str], ...]) -> None:
+    """List the registered backends (built-in and plugins); with --check, try them."""
+    settings = load_settings({"backend": backend})
+    names = [backend] if backend else sorted(registered_backends())
+    for name in names:
+        marker = "*" if name == settings.backend else " "
+        try:
+            doc = (backend_class(name).__doc__ or "").strip().splitlines()[0]
+        except TrajadaptError as exc:
+            click.echo(f"{marker} {name:10s} unavailable: {exc}")
+            continue
+        click.echo(f"{marker} {name:10s} {doc}")
+        if check:
+            click.echo("    " + _check_backend(name, _backend_options(options) if backend else {}))
+
+
+def _check_backend(name: str, options: dict[str, str]) -> str:
+    from trajadapt.backends.conformance import probe_backend
+
+    try:
+        return probe_backend(get_backend(name, options))
+    except TrajadaptError as exc:
+        return f"FAILED: {type(exc).__name__}: {exc}"
+
+
+@cli.command()
+@click.option("--limit", "-n", default=20, show_default=True, help="How many exchanges to show.")
+@click.option("--session", "session_id", default=None, help="Show one session (id or prefix).")
+@click.option("--json", "as_json", is_flag=True, help="Print the records as JSON lines.")
+def logs(limit: int, session_id: str | None, as_json: bool) -> None:
+    """Show logged exchanges (prompts, answers, plans, code, results) from the SQLite log."""
+    settings = load_settings()
+    if not settings.log_path.exists():
+        click.echo(f"No log yet at {settings.log_path}")
+        return
+    store = Store(settings.log_path)
+    try:
+        records = store.recent_exchanges(limit, session_id)
+    finally:
+        store.close()
+    for record in records:
+        if as_json:
+            click.echo(json.dumps(record.__dict__))
+            continue
+        when = datetime.fromtimestamp(record.created).strftime("%Y-%m-%d %H:%M:%S")
+        status = f"ERROR {record.error}" if record.error else "ok"
+        click.secho(f"#{record.id} {when} session {record.session_id} {record.kind} "
+                    f"[{record.backend}/{record.model}] {status}", bold=True)  # fmt: skip
+        click.echo(f"  instruction: {record.instruction}")
+        if record.plan:
+            click.echo("  plan: " + record.plan.replace("\n", "\n        "))

@@ -1,0 +1,86 @@
+"""Terminal output for the CLI: a progress spinner and the plan, code and result as people read them."""
+
+from __future__ import annotations
+
+import itertools
+import sys
+import threading
+import time
+from types import TracebackType
+from typing import TextIO
+
+import click
+
+from trajadapt.plan import Plan
+from trajadapt.session import AdaptationResult
+
+
+class Progress:
+    """Shows what is going on while the LLM works: a live spinner on a terminal, plain lines otherwise."""
+
+    def __init__(self, stream: TextIO | None = None) -> None:
+        self.stream = stream or sys.stderr
+        self.live = self.stream.isatty()
+        self._message = ""
+        self._since = time.monotonic()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+
+    def __enter__(self) -> Progress:
+        if self.live:
+            self._thread = threading.Thread(target=self._spin, daemon=True)
+            self._thread.start()
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+            self.stream.write("\r\033[K")
+            self.stream.flush()
+
+    def update(self, message: str) -> None:
+        """Show ``message`` as the current activity."""
+        self._message, self._since = message, time.monotonic()
+        if not self.live:
+            click.echo(f"... {message}", file=self.stream)
+
+    def _spin(self) -> None:
+        for frame in itertools.cycle("|/-\\"):
+            if self._stop.wait(0.15):
+                return
+            elapsed = time.monotonic() - self._since
+            line = f"\r\033[K{frame} {self._message} ({elapsed:.0f} s)"
+            self.stream.write(line[:200])
+            self.stream.flush()
+
+
+def show_plan(plan: Plan) -> None:
+    """Print the numbered plan and the code."""
+    click.secho("High-level plan:", bold=True)
+    click.echo(plan.numbered() or "(the answer gave no plan steps)")
+    click.secho("Code:", bold=True)
+    for number, line in enumerate(plan.code.rstrip("\n").splitlines(), start=1):
+        click.echo(f"{number:3d}  {line}")
+
+
+def show_result(result: AdaptationResult) -> None:
+    """Print the outcome: status, size, notes for the reviewer and timings."""
+    timings = result.timings
+    if result.ok and result.trajectory is not None:
+        click.secho(f"Result: ok, {len(result.trajectory)} waypoints", fg="green", bold=True)
+    else:
+        click.secho(f"Result: failed after {result.attempts} attempt(s): {result.error}", fg="red", err=True)
+    for note in result.notes:
+        click.secho(f"  note: {note.message}", fg="yellow")
+    if result.stdout.strip():
+        click.echo("Printed by the code:\n" + result.stdout.rstrip()[:2000])
+    click.echo(
+        f"Time: llm {timings.llm_s:.1f} s, execution {timings.exec_s * 1000:.0f} ms, "
+        f"total {timings.total_s:.1f} s ({result.backend}, {result.model})"
+    )

@@ -1,0 +1,127 @@
+"""Prompts: template files with named fields, rendered into chat messages.
+
+The fixed part (role, functions, coordinate system, rules, output format, examples) is the system
+message and comes first, byte-identical from one request to the next, so that a local model can
+reuse its cached state; what changes (environment, trajectory, instruction) follows it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import resources
+from string import Template
+
+import numpy as np
+
+from trajadapt.backends.base import ChatMessage
+from trajadapt.case import Case
+from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
+from trajadapt.trajectory import Trajectory
+
+
+@dataclass(frozen=True)
+class AxisConvention:
+    """What the positive direction of each axis means to the user."""
+
+    name: str
+    positive_x: str
+    negative_x: str
+    positive_y: str = "front"
+    negative_y: str = "back"
+    positive_z: str = "up"
+    negative_z: str = "down"
+
+    def describe(self) -> str:
+        """The COORDINATE SYSTEM section's lines."""
+        return "\n".join(
+            f"The positive {axis} axis is {positive}; the negative {axis} axis is {negative}."
+            for axis, positive, negative in (
+                ("X", self.positive_x, self.negative_x),
+                ("Y", self.positive_y, self.negative_y),
+                ("Z", self.positive_z, self.negative_z),
+            )
+        )
+
+
+AXIS_CONVENTIONS = {
+    "paper": AxisConvention("paper", positive_x="left", negative_x="right"),
+    "ovita": AxisConvention("ovita", positive_x="right", negative_x="left"),
+}
+
+
+def load_template(name: str) -> Template:
+    """Read the template file ``prompts/<name>.md`` shipped with the package."""
+    text = resources.files("trajadapt.prompts").joinpath(f"{name}.md").read_text(encoding="utf-8")
+    return Template(text)
+
+
+def render(name: str, **fields: str) -> str:
+    """Render template ``name``; every named field must be given.
+
+    Raises:
+        KeyError: a field of the template was not given.
+    """
+    return load_template(name).substitute(fields).strip() + "\n"
+
+
+def render_functions() -> str:
+    """The FUNCTIONS AVAILABLE section, built from the sandbox contract."""
+    return "\n".join(f"- {fn.signature}: {fn.description}" for fn in CONTRACT)
+
+
+def system_prompt(axes: AxisConvention) -> str:
+    """The fixed part of every conversation."""
+    return render(
+        "system",
+        functions=render_functions(),
+        coordinate_system=axes.describe(),
+        result_variable=RESULT_VARIABLE,
+    )
+
+
+def describe_environment(case: Case) -> str:
+    """Objects with positions, then the scene description and constraints when given."""
+    lines = [f"- {obj.name}: [{obj.x:.4g}, {obj.y:.4g}, {obj.z:.4g}]" for obj in case.scene.objects]
+    parts = ["Objects (name: [x, y, z]):\n" + ("\n".join(lines) if lines else "- none")]
+    if case.scene.description:
+        parts.append(case.scene.description)
+    if case.scene.constraints:
+        parts.append("Constraints: " + case.scene.constraints)
+    return "\n".join(parts)
+
+
+def summarize_trajectory(trajectory: Trajectory) -> str:
+    """Count, start, goal, extent, length and speed range: what the model needs, in few tokens."""
+    positions, speeds = trajectory.positions, trajectory.speeds
+    low, high = positions.min(axis=0), positions.max(axis=0)
+    extent = ", ".join(f"{axis} {lo:.3g}..{hi:.3g}" for axis, lo, hi in zip("xyz", low, high, strict=True))
+    return "\n".join(
+        [
+            f"- {len(trajectory)} waypoints, path length {trajectory.path_length():.3g}",
+            f"- start {_point(positions[0])}, goal {_point(positions[-1])}",
+            f"- extent: {extent}",
+            f"- velocity {speeds.min():.3g}..{speeds.max():.3g} (mean {speeds.mean():.3g})",
+        ]
+    )
+
+
+def _point(xyz: np.ndarray) -> str:
+    return "[" + ", ".join(f"{value:.3g}" for value in xyz) + "]"
+
+
+def task_prompt(case: Case) -> str:
+    """The per-request part: environment, trajectory summary and the instruction."""
+    return render(
+        "task",
+        environment=describe_environment(case),
+        trajectory=summarize_trajectory(case.trajectory),
+        instruction=case.instruction,
+    )
+
+
+def first_messages(case: Case, axes: AxisConvention) -> tuple[ChatMessage, ...]:
+    """The opening conversation for ``case``."""
+    return (
+        ChatMessage("system", system_prompt(axes)),
+        ChatMessage("user", task_prompt(case)),
+    )

@@ -1,0 +1,1 @@
+"""Run generated code isolated from the host: static check, restricted namespace, child process."""

@@ -1,0 +1,57 @@
+"""The contract with generated code: the functions it may call and the variable it must set.
+
+This module is imported inside the sandbox child, so it depends on numpy and the standard library
+only. The prompt's FUNCTIONS AVAILABLE section is rendered from ``CONTRACT`` so the two never drift.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+RESULT_VARIABLE = "modified_trajectory"
+
+
+@dataclass(frozen=True)
+class ApiFunction:
+    """One function the generated code may call, as the prompt describes it."""
+
+    signature: str
+    description: str
+
+
+CONTRACT = (
+    ApiFunction(
+        "get_trajectory()",
+        "returns the original trajectory as a numpy array of shape (N, 4); each row is "
+        "(x, y, z, velocity). Each call returns a fresh copy.",
+    ),
+    ApiFunction(
+        "detect_objects(object_name)",
+        "returns the [x, y, z] position of the named object (case-insensitive) if it is present, else None.",
+    ),
+)
+
+
+def _name_key(name: str) -> str:
+    return " ".join(str(name).split()).casefold()
+
+
+def build_api(
+    trajectory_rows: list[list[float]], objects: dict[str, list[float]]
+) -> dict[str, Callable[..., Any]]:
+    """Return ``get_trajectory`` and ``detect_objects`` bound to one job's data."""
+    original = np.asarray(trajectory_rows, dtype=np.float64)
+    positions = {_name_key(name): [float(v) for v in xyz] for name, xyz in objects.items()}
+
+    def get_trajectory() -> np.ndarray:
+        return original.copy()
+
+    def detect_objects(object_name: str) -> list[float] | None:
+        found = positions.get(_name_key(object_name))
+        return list(found) if found is not None else None
+
+    return {"get_trajectory": get_trajectory, "detect_objects": detect_objects}

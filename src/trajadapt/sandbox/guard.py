@@ -1,0 +1,140 @@
+"""Static check of generated code: the first of the sandbox's layers, run before anything executes.
+
+It refuses imports other than the allowed modules, any name or attribute that starts with an
+underscore (dunders, private members), frame and code attributes, file and module helpers of numpy,
+dynamic evaluation (eval, exec, getattr with built strings) and format strings that reach attributes.
+What passes still runs with restricted builtins, in a child process under resource limits.
+"""
+
+from __future__ import annotations
+
+import ast
+import string
+from dataclasses import dataclass
+
+ALLOWED_MODULES = frozenset(
+    {"numpy", "numpy.linalg", "numpy.random", "numpy.fft", "numpy.polynomial", "math"}
+)
+
+FORBIDDEN_NAMES = frozenset(
+    {
+        "eval", "exec", "compile", "open", "input", "breakpoint", "help", "globals", "locals",
+        "vars", "getattr", "setattr", "delattr", "hasattr", "memoryview", "super", "object",
+        "type", "classmethod", "staticmethod", "property", "exit", "quit", "copyright",
+        "credits", "license", "dir", "id",
+    }
+)  # fmt: skip
+
+FORBIDDEN_ATTRIBUTES = frozenset(
+    {
+        # frames, code objects and generators' insides
+        "gi_frame", "gi_code", "gi_yieldfrom", "cr_frame", "cr_code", "ag_frame", "ag_code",
+        "f_globals", "f_locals", "f_builtins", "f_back", "f_code", "tb_frame", "tb_next",
+        "co_code", "func_globals", "mro",
+        # numpy file, memory and module access
+        "load", "loads", "save", "savez", "savez_compressed", "savetxt", "loadtxt", "genfromtxt",
+        "fromfile", "tofile", "dump", "dumps", "memmap", "open_memmap", "fromregex", "DataSource",
+        "ctypes", "ctypeslib", "lib", "f2py", "distutils", "testing", "show_config",
+        "show_runtime", "get_include", "mtrand", "core", "modules", "system", "popen",
+        "builtins", "os", "sys",
+    }
+)  # fmt: skip
+
+FORMAT_METHODS = frozenset({"format", "format_map"})
+
+
+@dataclass(frozen=True)
+class Violation:
+    """Why the code was refused, and on which line."""
+
+    line: int
+    message: str
+
+
+def check_code(source: str) -> Violation | None:
+    r"""Return the first reason to refuse ``source``, or None when it may run.
+
+    >>> check_code("import numpy as np\\nx = np.zeros(3)") is None
+    True
+    >>> check_code("import os").message
+    "import of 'os' is not allowed; only numpy and math can be imported"
+    """
+    try:
+        tree = ast.parse(source, filename="<generated>")
+    except SyntaxError as exc:
+        return Violation(exc.lineno or 0, f"syntax error: {exc.msg}")
+    literal_format_calls = {
+        id(node.func) for node in ast.walk(tree) if isinstance(node, ast.Call) and _is_format_call(node)
+    }
+    for node in ast.walk(tree):
+        message = _node_violation(node, literal_format_calls)
+        if message is not None:
+            return Violation(getattr(node, "lineno", 0), message)
+    return None
+
+
+def _node_violation(node: ast.AST, literal_format_calls: set[int]) -> str | None:
+    if isinstance(node, ast.Import | ast.ImportFrom):
+        return _import_violation(node)
+    if isinstance(node, ast.Name):
+        return _name_violation(node.id)
+    if isinstance(node, ast.Attribute):
+        if node.attr in FORMAT_METHODS and id(node) not in literal_format_calls:
+            return _format_violation(node) or "str.format may only be called, not passed around"
+        return _attribute_violation(node.attr)
+    if isinstance(node, ast.ClassDef):
+        return "class definitions are not available in the sandbox; use functions"
+    if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.arg | ast.alias):
+        name = getattr(node, "name", None) or getattr(node, "arg", None) or ""
+        return _name_violation(str(name)) if name.startswith("_") else None
+    return None
+
+
+def _import_violation(node: ast.Import | ast.ImportFrom) -> str | None:
+    if isinstance(node, ast.ImportFrom):
+        if node.level:
+            return "relative imports are not allowed"
+        if any(alias.name == "*" for alias in node.names):
+            return f"'from {node.module} import *' is not allowed; import the names you use"
+        modules = [node.module or ""]
+    else:
+        modules = [alias.name for alias in node.names]
+    for module in modules:
+        if module not in ALLOWED_MODULES:
+            return f"import of {module!r} is not allowed; only numpy and math can be imported"
+    return None
+
+
+def _name_violation(name: str) -> str | None:
+    if name.startswith("_"):
+        return f"names starting with '_' are not allowed: {name!r}"
+    if name in FORBIDDEN_NAMES:
+        return f"{name!r} is not available in the sandbox"
+    return None
+
+
+def _attribute_violation(attribute: str) -> str | None:
+    if attribute.startswith("_"):
+        return f"attributes starting with '_' are not allowed: '.{attribute}'"
+    if attribute in FORBIDDEN_ATTRIBUTES:
+        return f"'.{attribute}' is not available in the sandbox (no file, frame or module access)"
+    return None
+
+
+def _is_format_call(node: ast.Call) -> bool:
+    func = node.func
+    return isinstance(func, ast.Attribute) and func.attr in FORMAT_METHODS and not _format_violation(func)
+
+
+def _format_violation(attribute: ast.Attribute) -> str:
+    """Explain why a ``.format`` use is refused; '' means it is a safe literal template."""
+    template = attribute.value
+    if not isinstance(template, ast.Constant) or not isinstance(template.value, str):
+        return "str.format may only be called on a literal string; use an f-string"
+    try:
+        fields = [field for _, field, _, _ in string.Formatter().parse(template.value) if field]
+    except ValueError as exc:
+        return f"bad format string: {exc}"
+    if any("." in field or "[" in field for field in fields):
+        return "format fields may not access attributes or items; use an f-string"
+    return ""

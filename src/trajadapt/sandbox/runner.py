@@ -1,0 +1,237 @@
+"""Host side of the sandbox: start the worker, send it jobs, turn its answers into SandboxResult."""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+import shutil
+import subprocess
+import sys
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import TracebackType
+from typing import Any, Literal
+
+from trajadapt.errors import SandboxError
+from trajadapt.scene import Scene
+from trajadapt.trajectory import Trajectory
+
+logger = logging.getLogger(__name__)
+
+Isolation = Literal["auto", "bwrap", "process"]
+BWRAP_ARGS = (
+    "--unshare-all", "--die-with-parent", "--new-session",
+    "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
+)  # fmt: skip
+WORKER_START_TIMEOUT_S = 30.0
+
+
+@dataclass(frozen=True)
+class SandboxLimits:
+    """Resource limits for one execution of generated code."""
+
+    cpu_s: float = 5.0
+    wall_s: float = 10.0
+    memory_mb: int = 512
+    max_output_chars: int = 20_000
+
+
+@dataclass(frozen=True)
+class CodeError:
+    """How generated code failed: exception type, message, and the line in the code if known."""
+
+    type: str
+    message: str
+    line: int | None = None
+
+    def describe(self) -> str:
+        """One line for people and for the repair prompt."""
+        where = f" (line {self.line})" if self.line else ""
+        return f"{self.type}{where}: {self.message}"
+
+
+@dataclass(frozen=True)
+class SandboxResult:
+    """What one execution produced: raw rows (unvalidated), printed text, or the error."""
+
+    rows: list[list[float]] | None
+    stdout: str
+    error: CodeError | None
+    duration_s: float
+    layers: tuple[str, ...] = field(default=())
+
+    @property
+    def ok(self) -> bool:
+        """True when the code ran to the end and set its result variable."""
+        return self.error is None and self.rows is not None
+
+
+class Sandbox:
+    """Runs generated code in an isolated worker process; reuse one instance for many runs.
+
+    The worker is started on first use and restarted if it dies. ``isolation`` picks the outer
+    layer: ``"bwrap"`` (bubblewrap: no network, read-only file system, own PID namespace),
+    ``"process"`` (child processes with limits and seccomp only), or ``"auto"`` (bwrap when it
+    is installed and works, else process).
+    """
+
+    def __init__(self, limits: SandboxLimits | None = None, isolation: Isolation = "auto") -> None:
+        self.limits = limits or SandboxLimits()
+        self.isolation = isolation
+        self._process: subprocess.Popen[str] | None = None
+        self._lock = threading.Lock()
+        self.outer_layer = ""
+
+    def __enter__(self) -> Sandbox:
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        self.close()
+
+    def run(self, code: str, trajectory: Trajectory, scene: Scene) -> SandboxResult:
+        """Execute ``code`` against ``trajectory`` and ``scene``; failures come back in the result.
+
+        Raises:
+            SandboxError: only when the sandbox itself cannot be started.
+        """
+        job = {
+            "code": code,
+            "trajectory": trajectory.to_rows(),
+            "objects": {obj.name: list(obj.position) for obj in scene.objects},
+            "cpu_s": self.limits.cpu_s,
+            "wall_s": self.limits.wall_s,
+            "memory_mb": self.limits.memory_mb,
+            "max_output_chars": self.limits.max_output_chars,
+        }
+        with self._lock:
+            answer = self._exchange(job)
+        return _to_result(answer, self.outer_layer)
+
+    def close(self) -> None:
+        """Stop the worker process."""
+        process, self._process = self._process, None
+        if process is None:
+            return
+        if process.stdin:
+            process.stdin.close()
+        try:
+            process.wait(timeout=2)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+        for stream in (process.stdout, process.stderr):
+            if stream:
+                stream.close()
+
+    def _exchange(self, job: dict[str, Any]) -> dict[str, Any]:
+        for attempt in range(2):
+            process = self._ensure_worker()
+            try:
+                assert process.stdin is not None and process.stdout is not None
+                process.stdin.write(json.dumps(job) + "\n")
+                process.stdin.flush()
+                line = process.stdout.readline()
+            except (BrokenPipeError, OSError):
+                line = ""
+            if line:
+                answer: dict[str, Any] = json.loads(line)
+                return answer
+            logger.warning("sandbox worker died (attempt %d); restarting it", attempt + 1)
+            self.close()
+        raise SandboxError("the sandbox worker keeps dying; run 'trajadapt doctor' to check it")
+
+    def _ensure_worker(self) -> subprocess.Popen[str]:
+        if self._process is not None and self._process.poll() is None:
+            return self._process
+        for command, layer in self._candidate_commands():
+            process = _start(command)
+            if _wait_ready(process):
+                self._process, self.outer_layer = process, layer
+                return process
+            stderr = _drain(process)
+            logger.warning("sandbox worker (%s) did not start: %s", layer, stderr.strip()[-500:])
+        raise SandboxError(
+            "the sandbox worker could not be started; check that numpy imports in this Python "
+            f"({sys.executable}) and, for isolation='bwrap', that 'bwrap --unshare-all true' works"
+        )
+
+    def _candidate_commands(self) -> list[tuple[list[str], str]]:
+        worker = [sys.executable, "-s", "-B", "-m", "trajadapt.sandbox.child"]
+        bwrap = shutil.which("bwrap")
+        if self.isolation == "bwrap" and bwrap is None:
+            raise SandboxError("isolation='bwrap' but bubblewrap is not installed (apt install bubblewrap)")
+        candidates = []
+        if bwrap is not None and self.isolation in ("auto", "bwrap"):
+            candidates.append(([bwrap, *BWRAP_ARGS, "--", *worker], "bwrap"))
+        if self.isolation in ("auto", "process"):
+            candidates.append((worker, "process"))
+        return candidates
+
+
+def _worker_environment() -> dict[str, str]:
+    package_root = str(Path(__file__).resolve().parents[2])
+    return {
+        "PATH": os.environ.get("PATH", "/usr/bin:/bin"),
+        "PYTHONPATH": package_root,
+        "OPENBLAS_NUM_THREADS": "1",
+        "OMP_NUM_THREADS": "1",
+        "MKL_NUM_THREADS": "1",
+        "LANG": "C.UTF-8",
+    }
+
+
+def _start(command: list[str]) -> subprocess.Popen[str]:
+    return subprocess.Popen(
+        command,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=_worker_environment(),
+        cwd="/",
+        start_new_session=True,
+    )
+
+
+def _wait_ready(process: subprocess.Popen[str]) -> bool:
+    holder: list[str] = []
+    reader = threading.Thread(target=_read_line_into, args=(process, holder), daemon=True)
+    reader.start()
+    reader.join(WORKER_START_TIMEOUT_S)
+    if holder and '"ready": true' in holder[0]:
+        return True
+    process.kill()
+    process.wait()
+    return False
+
+
+def _read_line_into(process: subprocess.Popen[str], holder: list[str]) -> None:
+    assert process.stdout is not None
+    holder.append(process.stdout.readline())
+
+
+def _drain(process: subprocess.Popen[str]) -> str:
+    text = process.stderr.read() if process.stderr else ""
+    for stream in (process.stdin, process.stdout, process.stderr):
+        if stream:
+            stream.close()
+    return text
+
+
+def _to_result(answer: dict[str, Any], outer_layer: str) -> SandboxResult:
+    error = answer.get("error")
+    layers = tuple(answer.get("layers", ())) + ((outer_layer,) if outer_layer else ())
+    return SandboxResult(
+        rows=answer.get("trajectory") if answer.get("ok") else None,
+        stdout=str(answer.get("stdout", "")),
+        error=CodeError(error["type"], error["message"], error.get("line")) if error else None,
+        duration_s=float(answer.get("duration_s", 0.0)),
+        layers=layers,
+    )

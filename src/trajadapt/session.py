@@ -1,0 +1,314 @@
+"""AdaptationSession: draft a plan, take feedback, approve, execute with automatic repair.
+
+The CLI and any other front end are thin views over these methods; the session does no I/O of its
+own beyond the backend, the sandbox and the log store it is given.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
+from trajadapt.case import Case
+from trajadapt.checks import ReviewNote, review_notes, validate_result
+from trajadapt.errors import AnswerParseError, InvalidTrajectory, SessionStateError
+from trajadapt.plan import Plan, parse_answer
+from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
+from trajadapt.sandbox.runner import Sandbox, SandboxResult
+from trajadapt.store import Store
+from trajadapt.trajectory import Trajectory
+
+TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
+
+
+@dataclass(frozen=True)
+class SessionSettings:
+    """How a session talks to the LLM and how hard it tries before giving up."""
+
+    axes: AxisConvention = AXIS_CONVENTIONS["paper"]
+    repair_attempts: int = 2
+    format_retries: int = 1
+    temperature: float = 0.0
+    max_tokens: int = 1024
+    seed: int | None = 0
+
+
+@dataclass(frozen=True)
+class Turn:
+    """One request to the LLM and what came of it."""
+
+    kind: TurnKind
+    user_text: str
+    plan: Plan | None
+    completion: Completion | None
+    error: str | None = None
+
+
+@dataclass(frozen=True)
+class Timings:
+    """Seconds spent waiting for the LLM, executing code, and in all."""
+
+    llm_s: float = 0.0
+    exec_s: float = 0.0
+    total_s: float = 0.0
+
+    def to_dict(self) -> dict[str, float]:
+        """The result file's ``timings_s`` field."""
+        return {
+            "llm": round(self.llm_s, 4),
+            "exec": round(self.exec_s, 4),
+            "total": round(self.total_s, 4),
+        }
+
+
+@dataclass(frozen=True)
+class AdaptationResult:
+    """The outcome of an approved plan: the new trajectory, or why there is none."""
+
+    case: Case
+    status: Literal["ok", "error"]
+    plan: Plan | None
+    trajectory: Trajectory | None
+    error: str | None
+    attempts: int
+    backend: str
+    model: str
+    timings: Timings
+    notes: tuple[ReviewNote, ...] = ()
+    stdout: str = ""
+    tokens: dict[str, int] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        """True when the code ran and produced a valid trajectory."""
+        return self.status == "ok"
+
+    def to_dict(self) -> dict[str, Any]:
+        """The result file's content."""
+        return {
+            "case": self.case.name,
+            "case_source": str(self.case.source) if self.case.source else None,
+            "instruction": self.case.instruction,
+            "high_level_plan": list(self.plan.steps) if self.plan else [],
+            "code": self.plan.code if self.plan else "",
+            "modified_trajectory": self.trajectory.to_rows() if self.trajectory else None,
+            "original_trajectory": self.case.trajectory.to_rows(),
+            "objects": [obj.to_dict() for obj in self.case.scene.objects],
+            "status": self.status,
+            "error": self.error,
+            "attempts": self.attempts,
+            "backend": self.backend,
+            "model": self.model,
+            "timings_s": self.timings.to_dict(),
+            "tokens": self.tokens,
+            "review_notes": [note.message for note in self.notes],
+            "stdout": self.stdout,
+        }
+
+
+ProgressCallback = Callable[[str], None]
+
+
+class AdaptationSession:
+    """The conversation about one case: plans, feedback, repairs and the final result."""
+
+    def __init__(
+        self,
+        case: Case,
+        backend: Backend,
+        sandbox: Sandbox,
+        settings: SessionSettings | None = None,
+        store: Store | None = None,
+        on_progress: ProgressCallback | None = None,
+    ) -> None:
+        self.case = case
+        self.backend = backend
+        self.sandbox = sandbox
+        self.settings = settings or SessionSettings()
+        self.store = store
+        self.on_progress = on_progress or (lambda _message: None)
+        self.turns: list[Turn] = []
+        self.messages: list[ChatMessage] = list(first_messages(case, self.settings.axes))
+        self.session_id: str | None = None
+        self._llm_s = 0.0
+        self._exec_s = 0.0
+        self._tokens = {"prompt": 0, "completion": 0}
+        self._last_stdout = ""
+        self._started = time.perf_counter()
+
+    @property
+    def plan(self) -> Plan | None:
+        """The latest plan the LLM proposed."""
+        return next((turn.plan for turn in reversed(self.turns) if turn.plan), None)
+
+    def draft(self) -> Plan:
+        """Ask for the first plan and code.
+
+        Raises:
+            SessionStateError: a plan was already drafted.
+            BackendError, AnswerParseError: the LLM could not give a readable plan.
+        """
+        if self.turns:
+            raise SessionStateError("this session already has a plan; use feedback() to change it")
+        if not self.case.instruction:
+            raise SessionStateError("the case has no instruction; give one with --instruction")
+        self._start_log()
+        return self._ask("draft", self.case.instruction)
+
+    def feedback(self, text: str) -> Plan:
+        """Send the user's feedback with the original instruction and previous plan; get a new plan."""
+        previous = self._require_plan()
+        if not text.strip():
+            raise SessionStateError("feedback is empty; say what should change in the plan")
+        self.messages.append(ChatMessage("user", render(
+            "feedback",
+            feedback=text.strip(),
+            instruction=self.case.instruction,
+            previous_plan=previous.numbered() or "(no plan)",
+        )))  # fmt: skip
+        return self._ask("feedback", text.strip())
+
+    def approve(self) -> AdaptationResult:
+        """Run the current code; on failure send the error back for up to ``repair_attempts`` fixes."""
+        plan = self._require_plan()
+        attempts = 0
+        while True:
+            attempts += 1
+            self.on_progress(f"running the code (attempt {attempts})")
+            outcome = self._execute(plan)
+            if isinstance(outcome, Trajectory) or attempts > self.settings.repair_attempts:
+                return self._result(plan, outcome, attempts)
+            self.on_progress(f"the code failed, asking for a repair: {outcome}")
+            self.messages.append(ChatMessage("user", render(
+                "repair", problem=outcome, instruction=self.case.instruction
+            )))  # fmt: skip
+            try:
+                plan = self._ask("repair", outcome)
+            except AnswerParseError as exc:
+                return self._result(plan, f"repair answer unreadable: {exc}", attempts)
+
+    def _require_plan(self) -> Plan:
+        plan = self.plan
+        if plan is None:
+            raise SessionStateError("there is no plan yet; call draft() first")
+        return plan
+
+    def _ask(self, kind: TurnKind, user_text: str) -> Plan:
+        """Send the conversation (its last user message already in place) and parse the answer."""
+        for retry in range(self.settings.format_retries + 1):
+            completion = self._complete()
+            self.messages.append(ChatMessage("assistant", completion.text))
+            try:
+                plan = parse_answer(completion.text)
+            except AnswerParseError as exc:
+                self._record(Turn(kind, user_text, None, completion, str(exc)))
+                if retry >= self.settings.format_retries:
+                    raise
+                self.messages.append(ChatMessage("user", render(
+                    "retry_format", problem=str(exc), instruction=self.case.instruction
+                )))  # fmt: skip
+                kind, user_text = "format-retry", str(exc)
+                continue
+            self._record(Turn(kind, user_text, plan, completion))
+            return plan
+        raise AssertionError("unreachable")
+
+    def _complete(self) -> Completion:
+        self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
+        request = ChatRequest(
+            messages=tuple(self.messages),
+            temperature=self.settings.temperature,
+            max_tokens=self.settings.max_tokens,
+            seed=self.settings.seed,
+        )
+        started = time.perf_counter()
+        completion = self.backend.complete(request)
+        self._llm_s += time.perf_counter() - started
+        self._tokens["prompt"] += completion.usage.prompt_tokens or 0
+        self._tokens["completion"] += completion.usage.completion_tokens or 0
+        return completion
+
+    def _execute(self, plan: Plan) -> Trajectory | str:
+        result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene)
+        self._exec_s += result.duration_s
+        outcome: Trajectory | str
+        if result.error is not None or result.rows is None:
+            outcome = result.error.describe() if result.error else "the code produced no trajectory"
+        else:
+            try:
+                outcome = validate_result(result.rows)
+            except InvalidTrajectory as exc:
+                outcome = f"InvalidTrajectory: {exc}"
+        self._log("execution", plan.code, {
+            "ok": isinstance(outcome, Trajectory),
+            "stdout": result.stdout,
+            "layers": list(result.layers),
+            "waypoints": len(outcome) if isinstance(outcome, Trajectory) else None,
+        }, None if isinstance(outcome, Trajectory) else outcome, {"exec": result.duration_s})  # fmt: skip
+        self._last_stdout = result.stdout
+        return outcome
+
+    def _result(self, plan: Plan, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
+        ok = isinstance(outcome, Trajectory)
+        trajectory = outcome if isinstance(outcome, Trajectory) else None
+        return AdaptationResult(
+            case=self.case,
+            status="ok" if ok else "error",
+            plan=plan,
+            trajectory=trajectory,
+            error=None if ok else str(outcome),
+            attempts=attempts,
+            backend=self.backend.name,
+            model=self.backend.model,
+            timings=Timings(self._llm_s, self._exec_s, time.perf_counter() - self._started),
+            notes=tuple(review_notes(self.case.trajectory, trajectory)) if trajectory else (),
+            stdout=self._last_stdout,
+            tokens=dict(self._tokens),
+        )
+
+    def _start_log(self) -> None:
+        if self.store is None:
+            return
+        self.session_id = self.store.start_session({
+            "case_name": self.case.name,
+            "case_source": str(self.case.source) if self.case.source else None,
+            "instruction": self.case.instruction,
+            "backend": self.backend.name,
+            "model": self.backend.model,
+            "case": self.case.to_dict(),
+        })  # fmt: skip
+
+    def _record(self, turn: Turn) -> None:
+        self.turns.append(turn)
+        completion = turn.completion
+        self._log(turn.kind, turn.plan.code if turn.plan else "", {
+            "plan": list(turn.plan.steps) if turn.plan else None,
+            "answer": completion.text if completion else None,
+            "request": [{"role": m.role, "content": m.content} for m in self.messages[:-1]],
+            "user_text": turn.user_text,
+            "usage": vars(completion.usage) if completion else None,
+        }, turn.error, {"llm": completion.duration_s if completion else None})  # fmt: skip
+
+    def _log(
+        self,
+        kind: str,
+        code: str,
+        details: dict[str, Any],
+        error: str | None,
+        timings: dict[str, Any],
+    ) -> None:
+        if self.store is None or self.session_id is None:
+            return
+        self.store.log_exchange(self.session_id, kind, {
+            "user_text": details.pop("user_text", None),
+            "request": details.pop("request", None),
+            "answer": details.pop("answer", None),
+            "plan": "\n".join(details.get("plan") or []),
+            "code": code,
+            "outcome": details,
+            "error": error,
+            "timings": timings,
+        })  # fmt: skip

@@ -1,0 +1,98 @@
+"""Settings: one frozen record, layered defaults < config.toml < TRAJADAPT_* variables < flags."""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any
+
+from trajadapt.errors import InputError
+
+HOME_ENV = "TRAJADAPT_HOME"
+
+
+def default_home() -> Path:
+    """``$TRAJADAPT_HOME``, else ``$XDG_DATA_HOME/trajadapt``, else ``~/.local/share/trajadapt``."""
+    if os.environ.get(HOME_ENV):
+        return Path(os.environ[HOME_ENV]).expanduser()
+    data_home = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
+    return Path(data_home) / "trajadapt"
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Everything configurable, passed explicitly; no global state.
+
+    Attributes:
+        home: folder for the log database, the model cache and ``config.toml``.
+        backend: the backend name used when none is given.
+        backend_options: options for that backend (``[backend_options]`` in config.toml).
+        axes: the coordinate convention stated in the prompt: ``paper`` (+X left) or ``ovita``.
+        repair_attempts: how often a failing code is sent back to the LLM before giving up.
+        log: whether exchanges are logged to SQLite.
+        isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
+    """
+
+    home: Path = field(default_factory=default_home)
+    backend: str = "local"
+    backend_options: Mapping[str, Any] = field(default_factory=dict)
+    axes: str = "paper"
+    repair_attempts: int = 2
+    log: bool = True
+    isolation: str = "auto"
+
+    @property
+    def log_path(self) -> Path:
+        """The SQLite log file."""
+        return self.home / "logs.db"
+
+    @property
+    def config_path(self) -> Path:
+        """The optional TOML configuration file."""
+        return self.home / "config.toml"
+
+
+ENV_FIELDS = {"backend": str, "axes": str, "repair_attempts": int, "log": bool, "isolation": str}
+
+
+def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:
+    """Build settings from defaults, ``config.toml`` in the home folder, the environment, then flags.
+
+    Raises:
+        InputError: the config file or an environment variable has a bad value.
+    """
+    settings = Settings()
+    settings = replace(settings, **_from_toml(settings.config_path))
+    settings = replace(settings, **_from_environment())
+    given = {key: value for key, value in (overrides or {}).items() if value is not None}
+    return replace(settings, **given)
+
+
+def _from_toml(path: Path) -> dict[str, Any]:
+    if not path.is_file():
+        return {}
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise InputError(f"{path}: cannot be read as TOML ({exc})") from exc
+    known = {f.name for f in fields(Settings)} - {"home"}
+    unknown = sorted(set(data) - known)
+    if unknown:
+        raise InputError(f"{path}: unknown setting {unknown[0]!r}; known: {', '.join(sorted(known))}")
+    return data
+
+
+def _from_environment() -> dict[str, Any]:
+    values: dict[str, Any] = {}
+    for name, kind in ENV_FIELDS.items():
+        raw = os.environ.get(f"TRAJADAPT_{name.upper()}")
+        if raw is None:
+            continue
+        try:
+            values[name] = raw.lower() in ("1", "true", "yes", "on") if kind is bool else kind(raw)
+        except ValueError as exc:
+            raise InputError(f"TRAJADAPT_{name.upper()}={raw!r} is not a valid {kind.__name__}") from exc
+    return values

@@ -112,11 +112,13 @@ def parse_options(options_type: type[Any], raw: Mapping[str, Any], backend: str)
 
 
 def _convert(value: Any, hint: Any, where: str) -> Any:
-    target = _concrete_type(hint)
-    if not isinstance(value, str) or target is str:
+    if not isinstance(value, str):
         return value
     if value.lower() in ("none", "null") and _allows_none(hint):
         return None
+    target = _concrete_type(hint)
+    if target is str:
+        return value
     try:
         if target is bool:
             return _parse_bool(value)

@@ -40,18 +40,40 @@ def _name_key(name: str) -> str:
     return " ".join(str(name).split()).casefold()
 
 
+@dataclass
+class ApiCalls:
+    """What the code asked for that was not there, to explain a failure afterwards."""
+
+    known_objects: list[str]
+    missing_objects: list[str]
+
+    def hint(self) -> str:
+        """A sentence for the error message, or '' when every lookup succeeded."""
+        if not self.missing_objects:
+            return ""
+        missing = ", ".join(repr(name) for name in dict.fromkeys(self.missing_objects))
+        known = ", ".join(repr(name) for name in self.known_objects) or "none"
+        return (
+            f"detect_objects found no object named {missing} (it returned None); "
+            f"objects in the scene: {known}"
+        )
+
+
 def build_api(
     trajectory_rows: list[list[float]], objects: dict[str, list[float]]
-) -> dict[str, Callable[..., Any]]:
-    """Return ``get_trajectory`` and ``detect_objects`` bound to one job's data."""
+) -> tuple[dict[str, Callable[..., Any]], ApiCalls]:
+    """Return ``get_trajectory`` and ``detect_objects`` bound to one job's data, and their call log."""
     original = np.asarray(trajectory_rows, dtype=np.float64)
     positions = {_name_key(name): [float(v) for v in xyz] for name, xyz in objects.items()}
+    calls = ApiCalls(known_objects=list(objects), missing_objects=[])
 
     def get_trajectory() -> np.ndarray:
         return original.copy()
 
     def detect_objects(object_name: str) -> list[float] | None:
         found = positions.get(_name_key(object_name))
+        if found is None:
+            calls.missing_objects.append(str(object_name))
         return list(found) if found is not None else None
 
-    return {"get_trajectory": get_trajectory, "detect_objects": detect_objects}
+    return {"get_trajectory": get_trajectory, "detect_objects": detect_objects}, calls

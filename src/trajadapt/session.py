@@ -17,7 +17,7 @@ from trajadapt.checks import ReviewNote, review_notes, validate_result
 from trajadapt.errors import AnswerParseError, InvalidTrajectory, SessionStateError
 from trajadapt.plan import Plan, parse_answer
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
-from trajadapt.sandbox.runner import Sandbox, SandboxResult
+from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 
@@ -29,6 +29,7 @@ class SessionSettings:
     """How a session talks to the LLM and how hard it tries before giving up."""
 
     axes: AxisConvention = AXIS_CONVENTIONS["paper"]
+    mode: str = "skills"
     repair_attempts: int = 2
     format_retries: int = 1
     temperature: float = 0.0
@@ -131,12 +132,13 @@ class AdaptationSession:
         self.store = store
         self.on_progress = on_progress or (lambda _message: None)
         self.turns: list[Turn] = []
-        self.messages: list[ChatMessage] = list(first_messages(case, self.settings.axes))
+        self.messages: list[ChatMessage] = list(first_messages(case, self.settings.axes, self.settings.mode))
         self.session_id: str | None = None
         self._llm_s = 0.0
         self._exec_s = 0.0
         self._tokens = {"prompt": 0, "completion": 0}
         self._last_stdout = ""
+        self._last_notes: tuple[str, ...] = ()
         self._started = time.perf_counter()
 
     @property
@@ -232,7 +234,11 @@ class AdaptationSession:
         return completion
 
     def _execute(self, plan: Plan) -> Trajectory | str:
-        result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene)
+        skills = self.settings.mode == "skills"
+        options = ExecutionOptions(
+            skills=skills, positive_x=self.settings.axes.positive_x, accept_last=skills
+        )
+        result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene, options)
         self._exec_s += result.duration_s
         outcome: Trajectory | str
         if result.error is not None or result.rows is None:
@@ -249,6 +255,7 @@ class AdaptationSession:
             "waypoints": len(outcome) if isinstance(outcome, Trajectory) else None,
         }, None if isinstance(outcome, Trajectory) else outcome, {"exec": result.duration_s})  # fmt: skip
         self._last_stdout = result.stdout
+        self._last_notes = result.notes
         return outcome
 
     def _result(self, plan: Plan, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
@@ -264,10 +271,16 @@ class AdaptationSession:
             backend=self.backend.name,
             model=self.backend.model,
             timings=Timings(self._llm_s, self._exec_s, time.perf_counter() - self._started),
-            notes=tuple(review_notes(self.case.trajectory, trajectory)) if trajectory else (),
+            notes=self._notes(trajectory),
             stdout=self._last_stdout,
             tokens=dict(self._tokens),
         )
+
+    def _notes(self, trajectory: Trajectory | None) -> tuple[ReviewNote, ...]:
+        if trajectory is None:
+            return ()
+        sandbox_notes = tuple(ReviewNote("sandbox", note) for note in self._last_notes)
+        return sandbox_notes + tuple(review_notes(self.case.trajectory, trajectory))
 
     def _start_log(self) -> None:
         if self.store is None:

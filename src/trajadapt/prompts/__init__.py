@@ -16,7 +16,10 @@ import numpy as np
 from trajadapt.backends.base import ChatMessage
 from trajadapt.case import Case
 from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
+from trajadapt.skills import describe_skills
 from trajadapt.trajectory import Trajectory
+
+PROMPT_MODES = ("skills", "paper")
 
 
 @dataclass(frozen=True)
@@ -64,16 +67,23 @@ def render(name: str, **fields: str) -> str:
     return load_template(name).substitute(fields).strip() + "\n"
 
 
-def render_functions() -> str:
-    """The FUNCTIONS AVAILABLE section, built from the sandbox contract."""
-    return "\n".join(f"- {fn.signature}: {fn.description}" for fn in CONTRACT)
+def render_functions(mode: str = "paper") -> str:
+    """The FUNCTIONS AVAILABLE section, built from the sandbox contract (and the skill library)."""
+    contract = "\n".join(f"- {fn.signature}: {fn.description}" for fn in CONTRACT)
+    return contract if mode == "paper" else contract + "\n" + describe_skills()
 
 
-def system_prompt(axes: AxisConvention) -> str:
-    """The fixed part of every conversation."""
+def system_prompt(axes: AxisConvention, mode: str = "skills") -> str:
+    """The fixed part of every conversation, for prompt mode ``skills`` or ``paper``.
+
+    Raises:
+        ValueError: an unknown mode.
+    """
+    if mode not in PROMPT_MODES:
+        raise ValueError(f"unknown prompt mode {mode!r}; use one of: {', '.join(PROMPT_MODES)}")
     return render(
-        "system",
-        functions=render_functions(),
+        f"system_{mode}",
+        functions=render_functions(mode),
         coordinate_system=axes.describe(),
         result_variable=RESULT_VARIABLE,
     )
@@ -119,9 +129,9 @@ def task_prompt(case: Case) -> str:
     )
 
 
-def first_messages(case: Case, axes: AxisConvention) -> tuple[ChatMessage, ...]:
+def first_messages(case: Case, axes: AxisConvention, mode: str = "skills") -> tuple[ChatMessage, ...]:
     """The opening conversation for ``case``."""
     return (
-        ChatMessage("system", system_prompt(axes)),
+        ChatMessage("system", system_prompt(axes, mode)),
         ChatMessage("user", task_prompt(case)),
     )

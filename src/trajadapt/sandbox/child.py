@@ -27,6 +27,7 @@ from trajadapt.sandbox import seccomp
 from trajadapt.sandbox.api import RESULT_VARIABLE, build_api
 from trajadapt.sandbox.guard import check_code
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
+from trajadapt.skills import Axes, bind_skills
 
 GENERATED_FILENAME = "<generated>"
 RESULT_FD = 3
@@ -184,10 +185,13 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
         return {**_error("Rejected", violation.message, violation.line), "stdout": ""}
     output = BoundedOutput(int(job["max_output_chars"]))
     api, calls = build_api(job["trajectory"], job["objects"])
+    if job.get("skills"):
+        api.update(bind_skills(Axes.from_positive_x(job.get("positive_x", "left"))))
     namespace = _namespace(api, modules, output)
+    notes: list[str] = []
     try:
         exec(compile(job["code"], GENERATED_FILENAME, "exec"), namespace)  # noqa: S102
-        rows = _result_rows(namespace)
+        rows = _result_rows(namespace, set(api), notes if job.get("accept_last") else None)
     except MemoryError:
         result = _error("MemoryError", f"the code used more than {job['memory_mb']} MB of memory")
     except BaseException as exc:  # noqa: BLE001 - every failure is reported to the host
@@ -196,6 +200,7 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
     else:
         result = {"ok": True, "trajectory": rows}
     result["stdout"] = output.text()
+    result["notes"] = notes
     return result
 
 
@@ -212,14 +217,18 @@ def _namespace(
     }
 
 
-def _result_rows(namespace: dict[str, Any]) -> list[list[float]]:
-    if RESULT_VARIABLE not in namespace:
+def _result_rows(namespace: dict[str, Any], provided: set[str], notes: list[str] | None) -> list[list[float]]:
+    """The rows of ``modified_trajectory``; with ``notes``, the last trajectory the code built instead."""
+    value = namespace.get(RESULT_VARIABLE)
+    if value is None and notes is not None:
+        value = _last_built_trajectory(namespace, provided, notes)
+    if value is None:
         raise NameError(
             f"the code did not set the variable '{RESULT_VARIABLE}'; "
             f"store the new trajectory in it as an (N, 4) array of x, y, z, velocity"
         )
     try:
-        array = np.asarray(namespace[RESULT_VARIABLE], dtype=np.float64)
+        array = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as exc:
         raise TypeError(f"'{RESULT_VARIABLE}' must be an (N, 4) array of numbers: {exc}") from None
     if array.ndim != 2 or array.shape[0] > MAX_WAYPOINTS:
@@ -228,6 +237,17 @@ def _result_rows(namespace: dict[str, Any]) -> list[list[float]]:
             f"got shape {array.shape}"
         )
     return [[float(value) for value in row] for row in array]
+
+
+def _last_built_trajectory(namespace: dict[str, Any], provided: set[str], notes: list[str]) -> Any:
+    """The most recently created variable holding an (N, 4) array, if the code forgot the result name."""
+    for name, value in reversed(list(namespace.items())):
+        if name.startswith("__") or name in provided:
+            continue
+        if isinstance(value, np.ndarray) and value.ndim == 2 and value.shape[1] == 4 and len(value) >= 2:
+            notes.append(f"the code did not set '{RESULT_VARIABLE}'; used its variable '{name}' instead")
+            return value
+    return None
 
 
 def _generated_line(exc: BaseException) -> int | None:

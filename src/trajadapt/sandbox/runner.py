@@ -40,6 +40,21 @@ class SandboxLimits:
 
 
 @dataclass(frozen=True)
+class ExecutionOptions:
+    """What the generated code is given beyond the trajectory and scene.
+
+    Attributes:
+        skills: bind the skill library's functions into the code's namespace.
+        positive_x: what +X means to the user ('left' or 'right'); skills read directions with it.
+        accept_last: when the code forgets ``modified_trajectory``, take the last (N, 4) array it built.
+    """
+
+    skills: bool = False
+    positive_x: str = "left"
+    accept_last: bool = False
+
+
+@dataclass(frozen=True)
 class CodeError:
     """How generated code failed: exception type, message, and the line in the code if known."""
 
@@ -62,6 +77,7 @@ class SandboxResult:
     error: CodeError | None
     duration_s: float
     layers: tuple[str, ...] = field(default=())
+    notes: tuple[str, ...] = field(default=())
 
     @property
     def ok(self) -> bool:
@@ -96,13 +112,19 @@ class Sandbox:
     ) -> None:
         self.close()
 
-    def run(self, code: str, trajectory: Trajectory, scene: Scene) -> SandboxResult:
+    def run(
+        self, code: str, trajectory: Trajectory, scene: Scene, options: ExecutionOptions | None = None
+    ) -> SandboxResult:
         """Execute ``code`` against ``trajectory`` and ``scene``; failures come back in the result.
 
         Raises:
             SandboxError: only when the sandbox itself cannot be started.
         """
+        chosen = options or ExecutionOptions()
         job = {
+            "skills": chosen.skills,
+            "positive_x": chosen.positive_x,
+            "accept_last": chosen.accept_last,
             "code": code,
             "trajectory": trajectory.to_rows(),
             "objects": {obj.name: list(obj.position) for obj in scene.objects},
@@ -244,4 +266,5 @@ def _to_result(answer: dict[str, Any], outer_layer: str) -> SandboxResult:
         error=CodeError(error["type"], error["message"], error.get("line")) if error else None,
         duration_s=float(answer.get("duration_s", 0.0)),
         layers=layers,
+        notes=tuple(answer.get("notes", ())),
     )

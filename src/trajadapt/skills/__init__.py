@@ -1,0 +1,92 @@
+"""The skill library: named, tested trajectory adaptations that generated code calls.
+
+The prompt's function list is rendered from ``SKILLS`` itself (name, signature, first docstring
+sentence), so the prompt and the library never drift apart. In the sandbox the functions are bound
+to the axis convention the prompt states.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+from collections.abc import Callable
+from typing import Any
+
+from trajadapt.skills import events, objects, shape, speed
+from trajadapt.skills.core import PAPER_AXES, Axes
+
+SKILLS: tuple[Callable[..., Any], ...] = (
+    shape.shift,
+    shape.shift_goal,
+    shape.shift_start,
+    shape.shift_part,
+    shape.lift_middle,
+    objects.move_closer,
+    objects.move_away,
+    objects.keep_distance,
+    objects.pass_through,
+    objects.reach,
+    objects.midpoint,
+    objects.closest_waypoint,
+    speed.scale_speed,
+    speed.set_speed,
+    speed.speed_profile,
+    events.stop_at,
+    events.wait,
+    events.extend,
+    events.append_segment,
+    events.spiral,
+    events.circle_around,
+    shape.set_height,
+    shape.stay_above,
+    shape.stay_below,
+    shape.keep_side,
+    shape.rotate,
+    shape.scale_about,
+    shape.exaggerate_curve,
+    shape.zigzag,
+    shape.smooth,
+    shape.resample,
+    shape.add_noise,
+    shape.path_size,
+)
+
+SKILL_NAMES = tuple(function.__name__ for function in SKILLS)
+PROMPT_HIDDEN = frozenset({"axes", "iterations", "count", "seed", "width"})  # rarely needed; shorter prompt
+
+
+def bind_skills(axes: Axes = PAPER_AXES) -> dict[str, Callable[..., Any]]:
+    """The skills by name, with the axis convention bound where a function takes one."""
+    bound: dict[str, Callable[..., Any]] = {}
+    for function in SKILLS:
+        if "axes" in inspect.signature(function).parameters:
+            bound[function.__name__] = functools.wraps(function)(functools.partial(function, axes=axes))
+        else:
+            bound[function.__name__] = function
+    return bound
+
+
+def signature_line(function: Callable[..., Any]) -> str:
+    """``name(args)``: what the prompt shows, without ``axes`` (bound by the sandbox) and tuning knobs."""
+    parameters = [p for p in inspect.signature(function).parameters.values() if p.name not in PROMPT_HIDDEN]
+    rendered = []
+    for parameter in parameters:
+        if parameter.default is inspect.Parameter.empty:
+            rendered.append(parameter.name)
+        else:
+            rendered.append(f"{parameter.name}={parameter.default!r}")
+    return f"{function.__name__}({', '.join(rendered)})"
+
+
+def summary(function: Callable[..., Any]) -> str:
+    """The first paragraph of the docstring, on one line."""
+    doc = inspect.getdoc(function) or ""
+    return " ".join(doc.split("\n\n")[0].split())
+
+
+def describe_skills() -> str:
+    """The prompt's list of skills: one line each."""
+    return "\n".join(f"- {signature_line(f)}: {summary(f)}" for f in SKILLS)
+
+
+__all__ = ["SKILLS", "SKILL_NAMES", "Axes", "PAPER_AXES", "bind_skills", "describe_skills"]

@@ -1,0 +1,208 @@
+"""Shared pieces of the skill library: array checks, direction and amount words, smooth blends.
+
+Everything here is pure numpy, so the library also loads inside the sandbox child.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+Array = npt.NDArray[np.float64]
+
+# Vague amount words, as fractions of the trajectory's size (largest side of its bounding box).
+AMOUNT_WORDS = {
+    "tiny": 0.04, "very slightly": 0.04, "slightly": 0.08, "a little": 0.08, "little": 0.08,
+    "a bit": 0.08, "bit": 0.08, "small": 0.08, "somewhat": 0.12, "default": 0.15, "": 0.15,
+    "moderately": 0.15, "much": 0.3, "a lot": 0.3, "lot": 0.3, "very": 0.3, "far": 0.3,
+    "large": 0.3, "significantly": 0.3, "very much": 0.4,
+}  # fmt: skip
+
+DIRECTION_SYNONYMS = {
+    "left": "left", "right": "right", "front": "front", "forward": "front", "forwards": "front",
+    "ahead": "front", "back": "back", "backward": "back", "backwards": "back", "behind": "back",
+    "rear": "back", "up": "up", "upward": "up", "upwards": "up", "higher": "up", "top": "up",
+    "above": "up", "upper": "up", "down": "down", "downward": "down", "downwards": "down",
+    "lower": "down", "bottom": "down", "below": "down",
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Axes:
+    """Unit vectors of the six named directions in the trajectory's frame."""
+
+    left: tuple[float, float, float] = (1.0, 0.0, 0.0)
+    front: tuple[float, float, float] = (0.0, 1.0, 0.0)
+    up: tuple[float, float, float] = (0.0, 0.0, 1.0)
+
+    @classmethod
+    def from_positive_x(cls, positive_x: str) -> Axes:
+        """The paper's frame when +X is left, OVITA's when +X is right (front +Y, up +Z in both)."""
+        return cls(left=(1.0, 0.0, 0.0) if positive_x == "left" else (-1.0, 0.0, 0.0))
+
+    def vector(self, direction: str) -> Array:
+        """The unit vector of a direction word ('left', 'upwards', 'back', ...).
+
+        Raises:
+            ValueError: an unknown word, listing the known ones.
+        """
+        word = DIRECTION_SYNONYMS.get(str(direction).strip().lower())
+        if word is None:
+            known = ", ".join(sorted(set(DIRECTION_SYNONYMS.values())))
+            raise ValueError(f"unknown direction {direction!r}; use one of: {known}")
+        sign = -1.0 if word in ("right", "back", "down") else 1.0
+        base = {"left": self.left, "right": self.left, "front": self.front, "back": self.front}
+        return sign * np.asarray(base.get(word, self.up), dtype=np.float64)
+
+
+PAPER_AXES = Axes()
+
+
+def as_trajectory(trajectory: Any) -> Array:
+    """A float copy of ``trajectory`` checked to be (N, 4) with N >= 2.
+
+    Raises:
+        ValueError: with the shape found and what is expected.
+    """
+    array = np.array(trajectory, dtype=np.float64, copy=True)
+    if array.ndim != 2 or array.shape[1] != 4 or array.shape[0] < 2:
+        raise ValueError(
+            f"expected a trajectory of shape (N, 4) with rows (x, y, z, velocity), got shape {array.shape}; "
+            "pass the array from get_trajectory() or from another skill"
+        )
+    return array
+
+
+def as_point(point: Any, name: str = "point") -> Array:
+    """A 3-vector from a position, an object position from detect_objects, or an (x, y, z, v) row.
+
+    Raises:
+        ValueError: None (an object that was not found) or a value that is not a position.
+    """
+    if point is None:
+        raise ValueError(
+            f"{name} is None: detect_objects() did not find that object; check its name in the "
+            "ENVIRONMENT DESCRIPTION"
+        )
+    if isinstance(point, str):
+        raise ValueError(
+            f"{name} must be a position [x, y, z] (for an object use detect_objects('{point}')), "
+            f"not the word {point!r}"
+        )
+    array = np.asarray(point, dtype=np.float64).reshape(-1)
+    if array.size not in (3, 4):
+        raise ValueError(f"{name} must be a position [x, y, z], got {point!r}")
+    return array[:3].copy()
+
+
+def extent(trajectory: Array) -> float:
+    """The largest side of the bounding box of the positions (at least a tiny positive number)."""
+    return float(max(np.ptp(trajectory[:, :3], axis=0).max(), 1e-9))
+
+
+def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> float:
+    """A distance from a number or a vague word ('a bit', 'a lot'), relative to the trajectory's size.
+
+    Raises:
+        ValueError: an unknown word, listing the known ones.
+    """
+    if amount is None:
+        amount = default_word
+    if isinstance(amount, str):
+        key = amount.strip().lower()
+        if key not in AMOUNT_WORDS:
+            words = ", ".join(sorted(w for w in AMOUNT_WORDS if w))
+            raise ValueError(f"unknown amount {amount!r}; give a number or one of: {words}")
+        return AMOUNT_WORDS[key] * extent(trajectory)
+    return float(amount)
+
+
+def progress(trajectory: Array) -> Array:
+    """Arc-length position of each waypoint along the path, from 0 at the start to 1 at the goal."""
+    steps = np.linalg.norm(np.diff(trajectory[:, :3], axis=0), axis=1)
+    total = steps.sum()
+    if total <= 0:
+        return np.linspace(0.0, 1.0, len(trajectory))
+    return np.concatenate([[0.0], np.cumsum(steps) / total])
+
+
+def smoothstep(x: Array) -> Array:
+    """0 below 0, 1 above 1, a smooth S in between (zero slope at both ends)."""
+    t = np.clip(x, 0.0, 1.0)
+    return t * t * t * (t * (6.0 * t - 15.0) + 10.0)
+
+
+def bump(trajectory: Array) -> Array:
+    """A weight that is 0 at start and goal and 1 in the middle, smooth (sin^2 of the progress)."""
+    return np.sin(np.pi * progress(trajectory)) ** 2
+
+
+def proximity(trajectory: Array, point: Array, radius: float) -> Array:
+    """1 at the waypoint nearest to ``point``, falling smoothly to 0 over ``radius`` beyond that."""
+    distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
+    relative = (distance - distance.min()) / max(radius, 1e-12)
+    weight: Array = np.exp(-(relative**2) * 3.0)
+    return weight
+
+
+def within(trajectory: Array, point: Array, radius: float, blend: float | None = None) -> Array:
+    """1 for waypoints within ``radius`` of ``point``, easing to 0 over ``blend`` beyond it."""
+    distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
+    width = blend if blend is not None else 0.5 * radius
+    return 1.0 - smoothstep((distance - radius) / max(width, 1e-12))
+
+
+PART_WORDS = {
+    "all": (0.0, 1.0), "whole": (0.0, 1.0), "start": (0.0, 0.3), "beginning": (0.0, 0.3),
+    "first half": (0.0, 0.5), "middle": (0.3, 0.7), "center": (0.3, 0.7), "second half": (0.5, 1.0),
+    "end": (0.7, 1.0), "goal": (0.7, 1.0), "final": (0.7, 1.0),
+}  # fmt: skip
+
+
+def part_mask(trajectory: Array, part: Any, blend: float = 0.1) -> Array:
+    """A smooth 0..1 weight selecting a part of the path.
+
+    ``part`` is a word ('all', 'start', 'middle', 'end', 'first half', 'second half'), a pair of
+    fractions of the path (0.2, 0.6), or a pair of waypoint indices (5, 20) (end exclusive).
+
+    Raises:
+        ValueError: an unknown word or a malformed pair.
+    """
+    low, high, by_index = _part_bounds(trajectory, part)
+    if by_index:
+        weights = np.zeros(len(trajectory))
+        weights[int(low) : int(high)] = 1.0
+        return weights
+    s = progress(trajectory)
+    rise = smoothstep((s - low) / blend + 0.5) if low > 0 else np.ones_like(s)
+    fall = 1.0 - smoothstep((s - high) / blend + 0.5) if high < 1 else np.ones_like(s)
+    return rise * fall
+
+
+def _part_bounds(trajectory: Array, part: Any) -> tuple[float, float, bool]:
+    if part is None:
+        return 0.0, 1.0, False
+    if isinstance(part, str):
+        key = part.strip().lower()
+        if key not in PART_WORDS:
+            raise ValueError(
+                f"unknown part {part!r}; use one of {', '.join(PART_WORDS)} or a pair (start, end)"
+            )
+        low, high = PART_WORDS[key]
+        return low, high, False
+    if isinstance(part, Sequence | np.ndarray) and len(part) == 2:
+        low, high = float(part[0]), float(part[1])
+        is_index = isinstance(part[0], int | np.integer) and isinstance(part[1], int | np.integer)
+        if is_index:
+            return max(low, 0), min(high, len(trajectory)), True
+        return low, high, False
+    raise ValueError(f"part must be a word or a pair (start, end), got {part!r}")
+
+
+def nearest_index(trajectory: Array, point: Any) -> int:
+    """Index of the waypoint closest to ``point``."""
+    return int(np.argmin(np.linalg.norm(trajectory[:, :3] - as_point(point), axis=1)))

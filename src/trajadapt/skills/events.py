@@ -1,0 +1,182 @@
+"""Skills that add or remove waypoints: stop, wait, extend past the goal, go on to a point, spirals, loops."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from trajadapt.skills.core import (
+    PAPER_AXES,
+    Array,
+    Axes,
+    as_point,
+    as_trajectory,
+    extent,
+    nearest_index,
+    resolve_amount,
+)
+
+
+def _index(t: Array, at: Any) -> int:
+    """A waypoint index from an index, 'start'/'middle'/'goal', or a point (its nearest waypoint)."""
+    if isinstance(at, str):
+        words = {
+            "start": 0,
+            "beginning": 0,
+            "middle": len(t) // 2,
+            "center": len(t) // 2,
+            "goal": len(t) - 1,
+            "end": len(t) - 1,
+        }
+        if at.strip().lower() not in words:
+            raise ValueError(f"unknown position {at!r}; use an index, a point, or one of {', '.join(words)}")
+        return words[at.strip().lower()]
+    if isinstance(at, int | np.integer):
+        return int(at) % len(t)
+    return nearest_index(t, at)
+
+
+def stop_at(trajectory: Any, point: Any) -> Array:
+    """End the trajectory at the waypoint nearest to point (later waypoints removed, velocity 0 there)."""
+    t = as_trajectory(trajectory)
+    k = max(nearest_index(t, point), 1)
+    stopped = t[: k + 1].copy()
+    stopped[-1, 3] = 0.0
+    return stopped
+
+
+def wait(trajectory: Any, at: Any, steps: int) -> Array:
+    """Pause steps timesteps at a waypoint (an index, 'start', 'middle', 'goal', or a point).
+
+    Pause for steps timesteps at a waypoint (an index, 'start', 'middle', 'goal', or a point): inserts
+    that many copies of it with velocity 0.
+    """
+    t = as_trajectory(trajectory)
+    k = _index(t, at)
+    pause = np.repeat(t[k : k + 1], max(int(steps), 0), axis=0)
+    pause[:, 3] = 0.0
+    return np.vstack([t[: k + 1], pause, t[k + 1 :]])
+
+
+def extend(
+    trajectory: Any,
+    distance: Any = None,
+    direction: str | None = None,
+    count: int = 10,
+    *,
+    axes: Axes = PAPER_AXES,
+) -> Array:
+    """Continue past the goal by distance, along the final heading or in a direction word.
+
+    Continue past the goal by distance (default 20% of the path's size), along the final heading or in a
+    direction ('left', 'back', 'up', ...), adding count waypoints.
+    """
+    t = as_trajectory(trajectory)
+    length = resolve_amount(distance, t, default_word="large") if distance is not None else 0.2 * extent(t)
+    heading = axes.vector(direction) if direction else _final_heading(t)
+    return append_segment(t, t[-1, :3] + heading * length, count)
+
+
+def _final_heading(t: Array) -> Array:
+    for k in range(len(t) - 1, 0, -1):
+        step = t[k, :3] - t[k - 1, :3]
+        norm = np.linalg.norm(step)
+        if norm > 1e-12:
+            return step / norm
+    raise ValueError("the trajectory does not move, so it has no final heading; give a direction")
+
+
+def append_segment(trajectory: Any, point: Any, count: int = 10) -> Array:
+    """After the goal, go on in a straight line to point, adding count waypoints (the robot stops there)."""
+    t = as_trajectory(trajectory)
+    target = as_point(point)
+    count = max(int(count), 1)
+    fractions = np.linspace(1.0 / count, 1.0, count)[:, None]
+    cruise = float(t[:, 3].max() if t[-1, 3] == 0 else t[-1, 3])
+    segment = np.hstack([t[-1, :3] + fractions * (target - t[-1, :3]), np.full((count, 1), cruise)])
+    segment[-1, 3] = 0.0
+    moving = t.copy()
+    moving[-1, 3] = cruise if t[-1, 3] == 0 else t[-1, 3]
+    return np.vstack([moving, segment])
+
+
+def spiral(
+    trajectory: Any,
+    max_radius: Any = None,
+    turns: float = 3.0,
+    at: Any = "goal",
+    count: int = 60,
+    *,
+    axes: Axes = PAPER_AXES,
+) -> Array:
+    """Add a horizontal spiral (max_radius, turns) at the goal, or at the waypoint nearest 'at'.
+
+    A horizontal spiral growing to max_radius over turns, at the goal (appended) or at the waypoint
+    nearest a point/object (inserted: spirals out and back in, then the path continues).
+    """
+    t = as_trajectory(trajectory)
+    radius = resolve_amount(max_radius, t, default_word="a bit")
+    k = _index(t, at)
+    grow = np.linspace(0.0, 1.0, int(count))
+    profile = grow if k == len(t) - 1 else np.sin(np.pi * grow)
+    loop = _horizontal_loop(t[k, :3], radius * profile, turns * 2 * np.pi * grow, axes)
+    return _insert_loop(t, k, loop)
+
+
+def circle_around(
+    trajectory: Any,
+    center: Any,
+    radius: Any = None,
+    turns: float = 1.0,
+    count: int = 40,
+    *,
+    axes: Axes = PAPER_AXES,
+) -> Array:
+    """Circle turns times around center (e.g. an object), then continue the path.
+
+    Leave the path at the waypoint nearest center, circle around center turns times at radius (default:
+    the current distance), and come back to continue the path.
+    """
+    t = as_trajectory(trajectory)
+    middle = as_point(center, "center")
+    k = nearest_index(t, middle)
+    up = axes.vector("up")
+    offset = t[k, :3] - middle
+    offset -= (offset @ up) * up
+    start_radius = float(np.linalg.norm(offset))
+    size = resolve_amount(radius, t) if radius is not None else max(start_radius, 0.05 * extent(t))
+    phase = (
+        np.arctan2(offset @ axes.vector("front"), offset @ axes.vector("right"))
+        if start_radius > 1e-12
+        else 0.0
+    )
+    angles = phase + np.linspace(0.0, 2 * np.pi * float(turns), int(count))
+    blend = np.sin(np.linspace(0.0, np.pi, int(count)))
+    radii = start_radius + (size - start_radius) * np.minimum(1.0, 3 * blend)
+    loop = _circle_points(middle + (t[k, :3] - middle) @ up * up, radii, angles, axes)
+    return _insert_loop(t, k, loop)
+
+
+def _horizontal_loop(center: Array, radii: Array, angles: Array, axes: Axes) -> Array:
+    return (
+        _circle_points(center, radii, angles, axes)
+        - _circle_points(center, radii[:1], angles[:1], axes)
+        + center
+    )
+
+
+def _circle_points(center: Array, radii: Array, angles: Array, axes: Axes) -> Array:
+    right, front = axes.vector("right"), axes.vector("front")
+    return center + radii[:, None] * (np.cos(angles)[:, None] * right + np.sin(angles)[:, None] * front)
+
+
+def _insert_loop(t: Array, k: int, loop: Array) -> Array:
+    speed = float(t[k, 3] if t[k, 3] > 0 else max(t[:, 3].max(), 1e-3))
+    rows = np.hstack([loop, np.full((len(loop), 1), speed)])
+    if k == len(t) - 1:
+        head = t.copy()
+        head[-1, 3] = speed
+        rows[-1, 3] = 0.0 if t[-1, 3] == 0 else t[-1, 3]
+        return np.vstack([head, rows[1:]])
+    return np.vstack([t[: k + 1], rows[1:-1], t[k:]])

@@ -1,0 +1,203 @@
+"""Skills relative to objects and points: closer, further, keep a distance, pass through, reach.
+
+Points are positions [x, y, z], e.g. ``detect_objects('box')``; None (an object not found) is
+refused with a message that says so.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from trajadapt.skills.core import (
+    Array,
+    as_point,
+    as_trajectory,
+    extent,
+    nearest_index,
+    progress,
+    proximity,
+    resolve_amount,
+    smoothstep,
+)
+
+CLOSER_FRACTIONS = {
+    "tiny": 0.2, "slightly": 0.3, "a little": 0.3, "a bit": 0.3, "little": 0.3, "bit": 0.3,
+    "": 0.5, "default": 0.5, "much": 0.75, "a lot": 0.75, "lot": 0.75, "very": 0.75, "very much": 0.85,
+}  # fmt: skip
+INFLUENCE = 0.5  # how far along the path (fraction of its size) an object-centred change reaches
+
+
+def _fraction(amount: Any) -> float:
+    if amount is None:
+        return CLOSER_FRACTIONS[""]
+    if isinstance(amount, str):
+        key = amount.strip().lower()
+        if key not in CLOSER_FRACTIONS:
+            words = ", ".join(k for k in CLOSER_FRACTIONS if k)
+            raise ValueError(f"unknown amount {amount!r}; use a fraction 0..1 or one of: {words}")
+        return CLOSER_FRACTIONS[key]
+    return float(np.clip(float(amount), 0.0, 1.0))
+
+
+def _weight(t: Array, point: Array) -> Array:
+    """Strongest at the waypoint nearest the object, fading along the path; 0 at start and goal."""
+    s = progress(t)
+    ends = smoothstep(s / 0.1) * smoothstep((1.0 - s) / 0.1)
+    return proximity(t, point, INFLUENCE * extent(t)) * ends
+
+
+def move_closer(trajectory: Any, point: Any, amount: Any = None) -> Array:
+    """Bring the path closer to a point; amount is a fraction 0..1 or 'a bit' / 'a lot'.
+
+    Bring the path closer to a point: the nearest part moves amount (fraction 0..1, or 'a bit', 'a lot')
+    of the way towards it; start and goal stay.
+    """
+    t = as_trajectory(trajectory)
+    target = as_point(point)
+    weight = _fraction(amount) * _weight(t, target)
+    t[:, :3] += weight[:, None] * (target - t[:, :3])
+    return t
+
+
+def move_away(trajectory: Any, point: Any, amount: Any = None) -> Array:
+    """Push the path away from a point by amount (a distance, or 'a bit' / 'a lot').
+
+    Push the path away from a point by amount (a distance, or 'a bit', 'a lot'); the nearest part moves
+    most; start and goal stay.
+    """
+    t = as_trajectory(trajectory)
+    source = as_point(point)
+    distance = resolve_amount(amount, t)
+    away = t[:, :3] - source
+    away /= np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-12)
+    t[:, :3] += (distance * _weight(t, source))[:, None] * away
+    return t
+
+
+def keep_distance(trajectory: Any, points: Any, distance: float, iterations: int = 50) -> Array:
+    """Keep every waypoint at least distance away from a point or a list of points.
+
+    Make every waypoint at least distance away from each point (one point or a list of points),
+    spreading the correction smoothly over neighbouring waypoints.
+    """
+    t = as_trajectory(trajectory)
+    centres = _points(points)
+    minimum = float(distance)
+    for _ in range(int(iterations)):
+        push = sum((_push(t, centre, minimum * 1.02) for centre in centres), np.zeros((len(t), 3)))
+        if not np.any(push):
+            break
+        t[:, :3] += _spread(push)
+    for centre in centres:  # exact guarantee after the smooth passes
+        t[:, :3] += _push(t, centre, minimum, sideways=False)
+    return t
+
+
+def _points(points: Any) -> list[Array]:
+    if points is None or isinstance(points, str):
+        return [as_point(points)]
+    array = np.asarray(points, dtype=object if _ragged(points) else np.float64)
+    if array.dtype != object and array.ndim == 1:
+        return [as_point(array)]
+    return [as_point(p, f"points[{i}]") for i, p in enumerate(points)]
+
+
+def _ragged(points: Any) -> bool:
+    try:
+        np.asarray(points, dtype=np.float64)
+    except (ValueError, TypeError):
+        return True
+    return False
+
+
+def _push(t: Array, centre: Array, minimum: float, sideways: bool = True) -> Array:
+    """Displacements that bring waypoints within ``minimum`` of ``centre`` out to it.
+
+    Sideways (across the direction of travel) when possible, so that a path running straight at
+    the object bends around it instead of bunching up; radially otherwise.
+    """
+    offset = t[:, :3] - centre
+    inside = np.linalg.norm(offset, axis=1) < minimum
+    if not inside.any():
+        return np.zeros((len(t), 3))
+    direction = _across(t, offset, inside) if sideways else _unit(offset, _fallback(t))
+    along = np.sum(offset * direction, axis=1)
+    gap = along**2 - (np.sum(offset * offset, axis=1) - minimum**2)
+    distance = -along + np.sqrt(np.maximum(gap, 0.0))
+    return np.where(inside[:, None], np.maximum(distance, 0.0)[:, None] * direction, 0.0)
+
+
+def _unit(vectors: Array, fallback: Array) -> Array:
+    norm = np.linalg.norm(vectors, axis=1, keepdims=True)
+    return np.where(norm > 1e-12, vectors / np.maximum(norm, 1e-12), fallback)
+
+
+def _across(t: Array, offset: Array, inside: Array) -> Array:
+    """One shared sideways direction per obstacle, perpendicular to each waypoint's heading."""
+    heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
+    perpendicular = offset - np.sum(offset * heading, axis=1, keepdims=True) * heading
+    shared = perpendicular[inside].sum(axis=0)
+    if np.linalg.norm(shared) < 1e-9:
+        shared = _fallback(t)[inside].sum(axis=0)
+    local = shared - np.sum(shared * heading, axis=1, keepdims=True) * heading
+    return _unit(local, _fallback(t))
+
+
+def _fallback(t: Array) -> Array:
+    """Horizontal unit vectors across the heading (for points straight ahead of an obstacle)."""
+    heading = np.gradient(t[:, :3], axis=0)
+    side = np.stack([-heading[:, 1], heading[:, 0], np.zeros(len(t))], axis=1)
+    norm = np.linalg.norm(side, axis=1, keepdims=True)
+    return np.where(norm > 1e-12, side / np.maximum(norm, 1e-12), np.array([[1.0, 0.0, 0.0]]))
+
+
+def _spread(push: Array) -> Array:
+    """Blend a correction into neighbouring waypoints (Gaussian over the index), keeping its peak."""
+    sigma = max(len(push) / 30.0, 1.0)
+    radius = int(3 * sigma)
+    kernel = np.exp(-0.5 * (np.arange(-radius, radius + 1) / sigma) ** 2)
+    spread = np.stack([np.convolve(push[:, k], kernel / kernel.max(), mode="same") for k in range(3)], axis=1)
+    peak = np.linalg.norm(push, axis=1).max()
+    largest = np.linalg.norm(spread, axis=1).max()
+    return spread * (peak / largest) if largest > 0 else spread
+
+
+def pass_through(trajectory: Any, point: Any, index: int | None = None, width: float = 0.25) -> Array:
+    """Bend the path so that it passes exactly through point (e.g. an object or a midpoint).
+
+    Bend the path so that it passes exactly through point, at the given waypoint index (default: the
+    nearest one); width (fraction of the path) sets how far the bend reaches.
+    """
+    t = as_trajectory(trajectory)
+    target = as_point(point)
+    k = nearest_index(t, target) if index is None else int(index) % len(t)
+    s = progress(t)
+    ramp = smoothstep(s)
+    weight = np.exp(-0.5 * ((s - s[k]) / max(float(width) / 2.0, 1e-6)) ** 2)
+    if k != 0:
+        weight = weight - (1.0 - ramp) * weight[0]  # the start stays
+    if k != len(t) - 1:
+        weight = weight - ramp * weight[-1]  # the goal stays
+    weight = weight / weight[k]
+    t[:, :3] += weight[:, None] * (target - t[k, :3])
+    return t
+
+
+def reach(trajectory: Any, point: Any) -> Array:
+    """Make the path end at point instead of the old goal; the start stays and the path bends smoothly."""
+    t = as_trajectory(trajectory)
+    offset = as_point(point) - t[-1, :3]
+    t[:, :3] += smoothstep(progress(t))[:, None] * offset
+    return t
+
+
+def midpoint(first: Any, second: Any) -> Array:
+    """The point halfway between two points (e.g. two objects)."""
+    return (as_point(first, "first") + as_point(second, "second")) / 2.0
+
+
+def closest_waypoint(trajectory: Any, point: Any) -> int:
+    """The index of the waypoint nearest to point."""
+    return nearest_index(as_trajectory(trajectory), point)

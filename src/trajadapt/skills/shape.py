@@ -1,0 +1,223 @@
+"""Skills that move the path itself: shifts, heights, sides, rotation, scaling, zig-zag, smoothing.
+
+Every function takes a trajectory (N, 4) and returns a new one; lengths are in the trajectory's
+own units; directions are words ('left', 'front', 'up', ...) read in the prompt's axis convention.
+Changes blend in smoothly, and the start stays where it is unless the function is about moving it.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from trajadapt.skills.core import (
+    PAPER_AXES,
+    Array,
+    Axes,
+    as_point,
+    as_trajectory,
+    bump,
+    extent,
+    part_mask,
+    progress,
+    resolve_amount,
+    smoothstep,
+)
+
+BLEND_IN = 0.25  # fraction of the path over which a shift of the whole path is blended in
+
+
+def shift(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+    """Move the path in a direction by amount, keeping the start (blended in over the first quarter).
+
+    Args:
+        trajectory: (N, 4) rows x, y, z, velocity.
+        direction: 'left', 'right', 'front', 'back', 'up', 'down' (or 'higher', 'top', 'bottom', ...).
+        amount: a distance, or a word ('slightly', 'a bit', 'a lot'); default 15% of the path's size.
+        axes: the axis convention (bound by the sandbox).
+    """
+    t = as_trajectory(trajectory)
+    offset = axes.vector(direction) * resolve_amount(amount, t)
+    t[:, :3] += smoothstep(progress(t) / BLEND_IN)[:, None] * offset
+    return t
+
+
+def shift_goal(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+    """Move the goal in a direction by amount; the start stays and the path bends smoothly towards it."""
+    t = as_trajectory(trajectory)
+    offset = axes.vector(direction) * resolve_amount(amount, t)
+    t[:, :3] += smoothstep(progress(t))[:, None] * offset
+    return t
+
+
+def shift_start(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+    """Move the start in a direction by amount; the goal stays and the change fades out along the path."""
+    t = as_trajectory(trajectory)
+    offset = axes.vector(direction) * resolve_amount(amount, t)
+    t[:, :3] += (1.0 - smoothstep(progress(t)))[:, None] * offset
+    return t
+
+
+def shift_part(
+    trajectory: Any, direction: str, amount: Any = None, part: Any = "middle", *, axes: Axes = PAPER_AXES
+) -> Array:
+    """Move one part of the path ('start', 'middle', 'end', a fraction pair or index pair) smoothly."""
+    t = as_trajectory(trajectory)
+    offset = axes.vector(direction) * resolve_amount(amount, t)
+    t[:, :3] += part_mask(t, part)[:, None] * offset
+    return t
+
+
+def set_height(trajectory: Any, height: float, keep_start: bool = True, keep_goal: bool = True) -> Array:
+    """Fly the path at a constant height z, blending from/to the start and goal if they are kept."""
+    t = as_trajectory(trajectory)
+    s = progress(t)
+    weight = np.ones(len(t))
+    if keep_start:
+        weight *= smoothstep(s / 0.15)
+    if keep_goal:
+        weight *= smoothstep((1.0 - s) / 0.15)
+    t[:, 2] += weight * (float(height) - t[:, 2])
+    return t
+
+
+def keep_side(
+    trajectory: Any, side: str, point: Any, margin: float = 0.0, *, axes: Axes = PAPER_AXES
+) -> Array:
+    """Keep every waypoint on one side ('left', 'right', 'front', 'back', 'up', 'down') of a point.
+
+    Example: "do not go left of the bottle" -> keep_side(traj, 'right', detect_objects('bottle')).
+    """
+    t = as_trajectory(trajectory)
+    normal = axes.vector(side)
+    boundary = float(as_point(point) @ normal) + float(margin)
+    along = t[:, :3] @ normal
+    t[:, :3] += np.maximum(boundary - along, 0.0)[:, None] * normal
+    return t
+
+
+def stay_above(trajectory: Any, height: float) -> Array:
+    """Raise any waypoint below height z up to it."""
+    t = as_trajectory(trajectory)
+    t[:, 2] = np.maximum(t[:, 2], float(height))
+    return t
+
+
+def stay_below(trajectory: Any, height: float) -> Array:
+    """Lower any waypoint above height z down to it."""
+    t = as_trajectory(trajectory)
+    t[:, 2] = np.minimum(t[:, 2], float(height))
+    return t
+
+
+def rotate(trajectory: Any, degrees: float, center: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+    """Turn the path by degrees about a vertical axis; positive is clockwise seen from above.
+
+    Turn the path about the vertical axis through center (default: the start); positive is clockwise
+    seen from above.
+    """
+    t = as_trajectory(trajectory)
+    pivot = t[0, :3] if center is None else as_point(center, "center")
+    right, front = axes.vector("right"), axes.vector("front")
+    relative = t[:, :3] - pivot
+    r, f = relative @ right, relative @ front
+    angle = np.radians(float(degrees))
+    new_r = r * np.cos(angle) + f * np.sin(angle)
+    new_f = -r * np.sin(angle) + f * np.cos(angle)
+    t[:, :3] += (new_r - r)[:, None] * right + (new_f - f)[:, None] * front
+    return t
+
+
+def scale_about(trajectory: Any, point: Any, factor: float, keep_ends: bool = True) -> Array:
+    """Multiply each waypoint's distance from point by factor (2 = twice as far), ends kept by default."""
+    t = as_trajectory(trajectory)
+    center = as_point(point)
+    weight = _ends_fade(t) if keep_ends else np.ones(len(t))
+    t[:, :3] += weight[:, None] * (float(factor) - 1.0) * (t[:, :3] - center)
+    return t
+
+
+def exaggerate_curve(trajectory: Any, factor: float = 1.5) -> Array:
+    """Scale how far the path bends away from the straight start-goal line (factor > 1: more curved)."""
+    t = as_trajectory(trajectory)
+    start, goal = t[0, :3], t[-1, :3]
+    s = progress(t)[:, None]
+    chord = start + s * (goal - start)
+    t[:, :3] = chord + float(factor) * (t[:, :3] - chord)
+    return t
+
+
+def zigzag(trajectory: Any, amplitude: Any = None, cycles: int = 4, *, axes: Axes = PAPER_AXES) -> Array:
+    """Add a sideways zig-zag (triangle wave) across the direction of travel; start and goal stay."""
+    t = as_trajectory(trajectory)
+    size = resolve_amount(amplitude, t, default_word="a bit")
+    s = progress(t)
+    wave = 2.0 * np.abs(2.0 * ((s * cycles) % 1.0) - 1.0) - 1.0
+    t[:, :3] += (size * wave * _ends_fade(t))[:, None] * _sideways(t, axes)
+    return t
+
+
+def _sideways(t: Array, axes: Axes) -> Array:
+    """Unit vectors in the horizontal plane, across the local direction of travel."""
+    up = axes.vector("up")
+    heading = np.gradient(t[:, :3], axis=0)
+    across = np.cross(heading, up)
+    norms = np.linalg.norm(across, axis=1, keepdims=True)
+    fallback = np.broadcast_to(axes.vector("left"), across.shape)
+    return np.where(norms > 1e-12, across / np.maximum(norms, 1e-12), fallback)
+
+
+def smooth(trajectory: Any, strength: float = 0.5) -> Array:
+    """Round off sharp turns and jitter (strength 0..1); start and goal stay; speeds smoothed too."""
+    t = as_trajectory(trajectory)
+    sigma = max(float(strength), 0.0) * max(len(t) / 20.0, 1.0)
+    if sigma <= 0:
+        return t
+    radius = int(np.ceil(3 * sigma))
+    kernel = np.exp(-0.5 * (np.arange(-radius, radius + 1) / sigma) ** 2)
+    kernel /= kernel.sum()
+    padded = np.pad(t, ((radius, radius), (0, 0)), mode="reflect", reflect_type="odd")
+    smoothed = np.stack([np.convolve(padded[:, k], kernel, mode="valid") for k in range(4)], axis=1)
+    smoothed[:, 3] = np.maximum(smoothed[:, 3], 0.0)
+    smoothed[[0, -1]] = t[[0, -1]]
+    return smoothed
+
+
+def resample(trajectory: Any, count: int) -> Array:
+    """The same path with count waypoints, evenly spaced along it (positions and speeds interpolated)."""
+    t = as_trajectory(trajectory)
+    count = int(count)
+    if count < 2:
+        raise ValueError(f"count must be at least 2, got {count}")
+    s = progress(t)
+    target = np.linspace(0.0, 1.0, count)
+    return np.stack([np.interp(target, s, t[:, k]) for k in range(4)], axis=1)
+
+
+def add_noise(trajectory: Any, scale: Any = "tiny", seed: int = 0) -> Array:
+    """Add small random (Gaussian) offsets to the positions; start and goal stay."""
+    t = as_trajectory(trajectory)
+    sigma = resolve_amount(scale, t)
+    noise = np.random.default_rng(seed).normal(0.0, sigma, size=(len(t), 3))
+    t[:, :3] += noise * _ends_fade(t)[:, None]
+    return t
+
+
+def _ends_fade(t: Array) -> Array:
+    """1 along the path, easing to 0 at the start and the goal (first and last 10%)."""
+    s = progress(t)
+    return smoothstep(s / 0.1) * smoothstep((1.0 - s) / 0.1)
+
+
+def lift_middle(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+    """Bow the middle of the path in a direction (start and goal stay), e.g. 'go to the top part'."""
+    t = as_trajectory(trajectory)
+    offset = axes.vector(direction) * resolve_amount(amount, t)
+    t[:, :3] += bump(t)[:, None] * offset
+    return t
+
+
+def path_size(trajectory: Any) -> float:
+    """The largest side of the path's bounding box, to express amounts relative to the path."""
+    return extent(as_trajectory(trajectory))

@@ -1,0 +1,98 @@
+"""Skills that change velocity only: scale or set it globally, near an object, in a part; profiles.
+
+Positions never change here. Changes near an object or in a part blend in and out smoothly, and
+velocities stay >= 0.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from trajadapt.skills.core import (
+    Array,
+    as_point,
+    as_trajectory,
+    extent,
+    part_mask,
+    progress,
+    proximity,
+    within,
+)
+
+NEAR_REACH = 0.2  # how far (fraction of the path's size) "near an object" reaches beyond the closest pass
+
+
+def speed_weight(trajectory: Any, near: Any = None, radius: float | None = None, part: Any = None) -> Array:
+    """Where a speed change applies: a weight 0..1 per waypoint.
+
+    Where a speed change applies, 0..1 per waypoint: near a point, within a radius of it, in a part of
+    the path ('start', 'middle', 'end', a fraction or index pair), or everywhere.
+    """
+    t = as_trajectory(trajectory)
+    weight = np.ones(len(t))
+    if near is not None:
+        point = as_point(near, "near")
+        if radius is None:
+            weight *= proximity(t, point, NEAR_REACH * extent(t))
+        else:
+            weight *= within(t, point, float(radius), blend=0.25 * float(radius))
+    if part is not None:
+        weight *= part_mask(t, part)
+    return weight
+
+
+def scale_speed(
+    trajectory: Any, factor: float, near: Any = None, radius: float | None = None, part: Any = None
+) -> Array:
+    """Multiply velocity by factor (0.5 half, 2 double): everywhere, near a point, or in a part.
+
+    Multiply the velocity by factor (0.5 = half as fast, 2 = twice as fast), everywhere or only near a
+    point / within radius of it / in a part.
+    """
+    t = as_trajectory(trajectory)
+    if float(factor) < 0:
+        raise ValueError(f"factor must be >= 0, got {factor}")
+    weight = speed_weight(t, near, radius, part)
+    t[:, 3] *= 1.0 + (float(factor) - 1.0) * weight
+    return t
+
+
+def set_speed(
+    trajectory: Any, speed: float, near: Any = None, radius: float | None = None, part: Any = None
+) -> Array:
+    """Set the velocity to speed, everywhere or only near a point / within radius of it / in a part."""
+    t = as_trajectory(trajectory)
+    if float(speed) < 0:
+        raise ValueError(f"speed must be >= 0, got {speed}")
+    weight = speed_weight(t, near, radius, part)
+    t[:, 3] += (float(speed) - t[:, 3]) * weight
+    return t
+
+
+def speed_profile(trajectory: Any, kind: str, peak: float | None = None, start: float = 0.0) -> Array:
+    """Velocity profile 'constant', 'trapezoidal', 'accelerate' or 'decelerate' from fraction start.
+
+    Replace the velocity by a profile: 'constant', 'trapezoidal' (speed up, cruise, slow down),
+    'accelerate' (uniformly up to peak) or 'decelerate' (uniformly down to 0 at the goal), applied from
+    fraction start of the path on; peak defaults to the current top speed.
+    """
+    t = as_trajectory(trajectory)
+    top = float(peak) if peak is not None else float(t[:, 3].max())
+    s = progress(t)
+    begin = float(np.clip(start, 0.0, 0.99))
+    local = np.clip((s - begin) / (1.0 - begin), 0.0, 1.0)
+    entry = float(np.interp(begin, s, t[:, 3]))
+    profiles: dict[str, Array] = {
+        "constant": np.full(len(t), top),
+        "trapezoidal": top * np.minimum(1.0, np.minimum(local, 1.0 - local) / 0.2),
+        "accelerate": entry + (top - entry) * local,
+        "decelerate": entry * (1.0 - local),
+    }
+    key = str(kind).strip().lower()
+    if key not in profiles:
+        raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(profiles)}")
+    after = s >= begin
+    t[after, 3] = np.maximum(profiles[key][after], 0.0)
+    return t

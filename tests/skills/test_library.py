@@ -1,0 +1,259 @@
+"""Each skill keeps its promise: what it moves, what it keeps, and how smoothly it changes the path."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
+from trajadapt.skills.core import Axes, as_point, resolve_amount
+
+N = 100
+
+
+def curve(n: int = N) -> np.ndarray:
+    """A gentle S-curve along +y at height 1, speed rising then falling."""
+    s = np.linspace(0.0, 1.0, n)
+    return np.c_[0.3 * np.sin(np.pi * s), 2.0 * s, np.ones(n), 0.5 + 0.5 * np.sin(np.pi * s)]
+
+
+def displacement_is_smooth(before: np.ndarray, after: np.ndarray, bound: float = 0.05) -> bool:
+    """The change field has no kinks: its largest second difference is small against its size."""
+    field = after[:, :3] - before[:, :3]
+    size = np.abs(field).max()
+    return size == 0 or np.abs(np.diff(field, n=2, axis=0)).max() <= bound * size
+
+
+def test_original_is_never_modified() -> None:
+    t = curve()
+    frozen = t.copy()
+    shape.shift(t, "left", 0.2)
+    objects.move_closer(t, [0, 1, 1])
+    speed.scale_speed(t, 0.5)
+    events.wait(t, "middle", 3)
+    assert np.array_equal(t, frozen)
+
+
+@pytest.mark.parametrize(
+    ("direction", "axis", "sign"),
+    [
+        ("left", 0, 1),
+        ("right", 0, -1),
+        ("front", 1, 1),
+        ("backwards", 1, -1),
+        ("up", 2, 1),
+        ("bottom", 2, -1),
+    ],
+)
+def test_shift_moves_the_path_and_keeps_the_start(direction: str, axis: int, sign: int) -> None:
+    t = curve()
+    out = shape.shift(t, direction, 0.2)
+    assert np.allclose(out[0], t[0])
+    assert np.isclose(out[-1, axis] - t[-1, axis], sign * 0.2)
+    moved = (out[:, axis] - t[:, axis]) * sign
+    assert (moved >= -1e-12).all() and np.mean(moved > 0.19) > 0.6
+    assert np.allclose(np.delete(out[:, :3] - t[:, :3], axis, axis=1), 0)
+    assert np.array_equal(out[:, 3], t[:, 3])
+    assert displacement_is_smooth(t, out)
+
+
+def test_axis_convention_flips_left_and_right() -> None:
+    ovita = Axes.from_positive_x("right")
+    out = shape.shift(curve(), "left", 0.2, axes=ovita)
+    assert np.isclose(out[-1, 0] - curve()[-1, 0], -0.2)
+    assert bind_skills(ovita)["shift"](curve(), "left", 0.2)[-1, 0] < curve()[-1, 0]
+
+
+def test_vague_amounts_scale_with_the_path() -> None:
+    t = curve()
+    assert resolve_amount("slightly", t) < resolve_amount(None, t) < resolve_amount("a lot", t)
+    assert np.isclose(resolve_amount("a lot", t), 0.3 * 2.0)
+    with pytest.raises(ValueError, match="unknown amount 'loads'"):
+        shape.shift(t, "left", "loads")
+    with pytest.raises(ValueError, match="unknown direction 'sideways'"):
+        shape.shift(t, "sideways", 0.1)
+
+
+def test_shift_goal_and_start() -> None:
+    t = curve()
+    goal = shape.shift_goal(t, "left", 0.3)
+    assert np.allclose(goal[0], t[0]) and np.isclose(goal[-1, 0] - t[-1, 0], 0.3)
+    assert displacement_is_smooth(t, goal)
+    start = shape.shift_start(t, "down", 0.3)
+    assert np.allclose(start[-1], t[-1]) and np.isclose(start[0, 2] - t[0, 2], -0.3)
+    assert displacement_is_smooth(t, start)
+
+
+def test_shift_part_by_words_and_indices() -> None:
+    t = curve()
+    middle = shape.shift_part(t, "up", 0.1, "middle")
+    assert np.allclose(middle[[0, -1]], t[[0, -1]]) and np.isclose(middle[N // 2, 2] - 1, 0.1)
+    assert displacement_is_smooth(t, middle, bound=0.12)
+    first = shape.shift_part(t, "left", 0.1, (0, 10))
+    assert np.allclose(first[:10, 0] - t[:10, 0], 0.1) and np.allclose(first[10:], t[10:])
+
+
+def test_lift_middle() -> None:
+    t = curve()
+    out = shape.lift_middle(t, "up", 0.2)
+    assert np.allclose(out[[0, -1]], t[[0, -1]]) and np.isclose((out[:, 2] - t[:, 2]).max(), 0.2, atol=1e-3)
+    assert displacement_is_smooth(t, out)
+
+
+def distances(t: np.ndarray, point: list[float]) -> np.ndarray:
+    return np.linalg.norm(t[:, :3] - np.asarray(point), axis=1)
+
+
+def test_move_closer_and_away() -> None:
+    t, box = curve(), [0.8, 1.0, 1.0]
+    closer = objects.move_closer(t, box)
+    assert distances(closer, box).min() < 0.6 * distances(t, box).min()
+    assert np.allclose(closer[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, closer)
+    assert (
+        distances(objects.move_closer(t, box, "a lot"), box).min()
+        < distances(objects.move_closer(t, box, "a bit"), box).min()
+    )
+    away = objects.move_away(t, box, 0.3)
+    assert distances(away, box).min() > distances(t, box).min() + 0.25
+    assert np.allclose(away[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, away)
+
+
+def test_keep_distance_from_one_and_several_points() -> None:
+    t = curve()
+    near = [[0.3, 1.0, 1.0], [0.0, 0.4, 1.0]]
+    out = objects.keep_distance(t, near, 0.25)
+    for point in near:
+        assert distances(out, point).min() >= 0.25 - 1e-9
+    assert np.allclose(out[-1], t[-1])
+    steps = np.linalg.norm(np.diff(out[:, :3], axis=0), axis=1)
+    assert steps.max() < 4 * np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max()
+    single = objects.keep_distance(t, [0.3, 1.0, 1.0], 0.25)
+    assert distances(single, [0.3, 1.0, 1.0]).min() >= 0.25 - 1e-9
+
+
+def test_pass_through_and_reach() -> None:
+    t, target = curve(), np.array([0.6, 1.2, 1.4])
+    out = objects.pass_through(t, target)
+    assert distances(out, target).min() < 1e-9
+    assert np.allclose(out[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, out, bound=0.1)
+    reached = objects.reach(t, target)
+    assert np.allclose(reached[-1, :3], target) and np.allclose(reached[0], t[0])
+    assert np.allclose(objects.midpoint([0, 0, 0], [2, 4, 6]), [1, 2, 3])
+
+
+def test_missing_object_and_words_are_explained() -> None:
+    with pytest.raises(ValueError, match="detect_objects\\(\\) did not find"):
+        objects.move_closer(curve(), None)
+    with pytest.raises(ValueError, match="use detect_objects\\('top'\\)"):
+        as_point("top")
+    with pytest.raises(ValueError, match="shape \\(40, 3\\)"):
+        shape.shift(np.zeros((40, 3)), "left")
+
+
+def test_speed_near_an_object_only() -> None:
+    t, box = curve(), [0.3, 1.0, 1.0]
+    out = speed.scale_speed(t, 0.5, near=box)
+    k = int(np.argmin(distances(t, box)))
+    assert np.isclose(out[k, 3], 0.5 * t[k, 3])
+    assert np.allclose(out[[0, -1], 3], t[[0, -1], 3], rtol=0.02)
+    assert np.array_equal(out[:, :3], t[:, :3])
+    radius = speed.set_speed(t, 0.1, near=box, radius=0.2)
+    inside = distances(t, box) <= 0.2
+    assert np.allclose(radius[inside, 3], 0.1) and np.allclose(
+        radius[distances(t, box) > 0.3, 3], t[distances(t, box) > 0.3, 3]
+    )
+
+
+def test_speed_globally_in_parts_and_profiles() -> None:
+    t = curve()
+    assert np.allclose(speed.scale_speed(t, 2.0)[:, 3], 2 * t[:, 3])
+    middle = speed.scale_speed(t, 2.0, part="middle")
+    assert np.isclose(middle[N // 2, 3], 2 * t[N // 2, 3]) and np.isclose(middle[0, 3], t[0, 3])
+    assert np.allclose(speed.speed_profile(t, "constant", 0.2)[:, 3], 0.2)
+    slow = speed.speed_profile(t, "decelerate", start=0.7)
+    assert slow[-1, 3] == 0 and (np.diff(slow[75:, 3]) < 0).all() and np.allclose(slow[:60, 3], t[:60, 3])
+    trapezoid = speed.speed_profile(t, "trapezoidal", 1.0)[:, 3]
+    assert trapezoid[0] == 0 and trapezoid[-1] == 0 and np.isclose(trapezoid.max(), 1.0)
+    rising = speed.speed_profile(t, "accelerate", 2.0)[:, 3]
+    assert (np.diff(rising) >= 0).all()
+    with pytest.raises(ValueError):
+        speed.scale_speed(t, -1)
+
+
+def test_stop_wait_extend_segment() -> None:
+    t = curve()
+    stopped = events.stop_at(t, t[30, :3])
+    assert len(stopped) == 31 and stopped[-1, 3] == 0
+    waited = events.wait(t, "middle", 5)
+    assert (
+        len(waited) == N + 5 and (waited[51:56, 3] == 0).all() and np.allclose(waited[51:56, :3], t[50, :3])
+    )
+    longer = events.extend(t, 0.4)
+    assert len(longer) == N + 10 and np.allclose(longer[: N - 1], t[: N - 1])
+    heading = (t[-1, :3] - t[-2, :3]) / np.linalg.norm(t[-1, :3] - t[-2, :3])
+    assert np.allclose(longer[-1, :3], t[-1, :3] + 0.4 * heading)
+    left = events.extend(t, 0.2, "left")
+    assert np.isclose(left[-1, 0] - t[-1, 0], 0.2)
+    segment = events.append_segment(t, [1, 1, 1], count=5)
+    assert np.allclose(segment[-1, :3], [1, 1, 1]) and segment[-1, 3] == 0 and segment[N - 1, 3] > 0
+
+
+def test_spiral_and_circle() -> None:
+    t = curve()
+    at_goal = events.spiral(t, 0.1, turns=3)
+    extra = at_goal[N:, :3]
+    assert len(at_goal) > N and np.linalg.norm(extra - t[-1, :3], axis=1).max() <= 0.1 + 1e-9
+    angles = np.unwrap(np.arctan2(extra[:, 1] - t[-1, 1], extra[:, 0] - t[-1, 0]))
+    assert abs(angles[-1] - angles[0]) > 2 * np.pi * 2.5
+    box = [0.5, 1.0, 1.0]
+    around = events.circle_around(t, box, turns=1)
+    assert np.allclose(around[-1], t[-1]) and len(around) > N
+    loop_angles = np.unwrap(np.arctan2(around[:, 1] - 1.0, around[:, 0] - 0.5))
+    assert np.ptp(loop_angles) > 1.8 * np.pi
+    inserted = events.spiral(t, 0.1, at=box)
+    assert np.allclose(inserted[-1], t[-1])
+
+
+def test_heights_sides_rotation_scaling() -> None:
+    t = curve()
+    level = shape.set_height(t, 0.5, keep_start=False, keep_goal=False)
+    assert np.allclose(level[:, 2], 0.5)
+    kept = shape.set_height(t, 0.5)
+    assert np.allclose(kept[[0, -1]], t[[0, -1]]) and np.isclose(kept[N // 2, 2], 0.5)
+    assert shape.stay_above(t, 1.2)[:, 2].min() == 1.2 and shape.stay_below(t, 0.8)[:, 2].max() == 0.8
+    right_of = shape.keep_side(t, "right", [0.1, 0, 0])
+    assert right_of[:, 0].max() <= 0.1 + 1e-12
+    turned = shape.rotate(t, 90)
+    assert np.allclose(turned[0], t[0])
+    assert np.isclose(turned[-1, 0], t[0, 0] - 2.0) and np.isclose(
+        turned[-1, 1], t[0, 1]
+    )  # front -> right (-x)
+    doubled = shape.scale_about(t, [0, 1, 1], 2.0, keep_ends=False)
+    assert np.allclose(distances(doubled, [0, 1, 1]), 2 * distances(t, [0, 1, 1]))
+    bent = shape.exaggerate_curve(t, 2.0)
+    assert np.isclose(bent[N // 2, 0], 2 * t[N // 2, 0], atol=0.01) and np.allclose(bent[[0, -1]], t[[0, -1]])
+
+
+def test_zigzag_smooth_resample_noise() -> None:
+    t = curve()
+    zig = shape.zigzag(t, 0.05, cycles=4)
+    sideways = zig[:, 0] - t[:, 0]
+    assert np.allclose(zig[[0, -1]], t[[0, -1]]) and np.sum(np.diff(np.sign(sideways[5:-5])) != 0) >= 6
+    noisy = shape.add_noise(t, 0.01)
+    assert np.allclose(noisy[[0, -1]], t[[0, -1]]) and 0 < np.abs(noisy - t).max() < 0.06
+    smoothed = shape.smooth(noisy, 0.5)
+    assert (
+        np.abs(np.diff(smoothed[:, :3], n=2, axis=0)).max() < np.abs(np.diff(noisy[:, :3], n=2, axis=0)).max()
+    )
+    assert np.allclose(smoothed[[0, -1]], noisy[[0, -1]])
+    more = shape.resample(t, 2 * N)
+    assert len(more) == 2 * N and np.allclose(more[[0, -1]], t[[0, -1]])
+    fewer = shape.resample(t, 10)
+    assert len(fewer) == 10 and (fewer[:, 3] >= 0).all()
+
+
+def test_every_skill_is_documented_and_listed() -> None:
+    text = describe_skills()
+    for function in SKILLS:
+        assert function.__doc__ and function.__name__ + "(" in text
+    assert "axes" not in text

@@ -145,7 +145,9 @@ def test_every_exchange_is_logged(simple_case: Case, sandbox: Sandbox, tmp_path:
     store.close()
 
 
-def test_skills_mode_binds_the_library_and_takes_the_last_trajectory(simple_case: Case, sandbox: Sandbox) -> None:
+def test_skills_mode_binds_the_library_and_takes_the_last_trajectory(
+    simple_case: Case, sandbox: Sandbox
+) -> None:
     code = "t = get_trajectory()\nt2 = shift(t, 'left', 0.3)\n"
     session, _ = make_session(simple_case, sandbox, answer("1) Shift left.", code), mode="skills")
     session.draft()
@@ -157,10 +159,14 @@ def test_skills_mode_binds_the_library_and_takes_the_last_trajectory(simple_case
 
 def test_paper_mode_has_no_skills_and_needs_the_result_variable(simple_case: Case, sandbox: Sandbox) -> None:
     code = "t = get_trajectory()\nt2 = shift(t, 'left', 0.3)\n"
-    session, backend = make_session(simple_case, sandbox, answer("1) a", code), mode="paper", repair_attempts=0)
+    session, backend = make_session(
+        simple_case, sandbox, answer("1) a", code), mode="paper", repair_attempts=0
+    )
     session.draft()
     result = session.approve()
-    assert not result.ok and result.error is not None and "NameError" in result.error and "shift" in result.error
+    assert (
+        not result.ok and result.error is not None and "NameError" in result.error and "shift" in result.error
+    )
     assert "shift(trajectory" not in backend.requests[0].messages[0].content
 
 
@@ -168,7 +174,9 @@ def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandb
     from trajadapt.prompts import AXIS_CONVENTIONS
 
     code = "modified_trajectory = shift(get_trajectory(), 'left', 0.3)\n"
-    session, backend = make_session(simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"])
+    session, backend = make_session(
+        simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"]
+    )
     session.draft()
     result = session.approve()
     assert result.trajectory is not None and np.isclose(result.trajectory.positions[-1, 0], -0.3)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import logging
+import sys
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -12,11 +13,13 @@ import click
 
 from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import backend_class, get_backend, registered_backends
+from trajadapt.bench.report import write_report
+from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.case import Case, load_case, load_case_from_parts
 from trajadapt.console import Progress, show_plan, show_result
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
-from trajadapt.prompts import AXIS_CONVENTIONS
+from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.results import write_json_atomic
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
@@ -108,6 +111,12 @@ option_option = click.option(
     default=None,
     help="Automatic repair rounds when the code fails (default 2).",
 )
+@click.option(
+    "--mode",
+    type=click.Choice(PROMPT_MODES),
+    default=None,
+    help="Prompt mode: skills (default; the skill library) or paper (the paper's prompt).",
+)
 @click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
 def adapt(
     case_file: Path | None,
@@ -121,6 +130,7 @@ def adapt(
     plot_file: Path | None,
     axes: str | None,
     repairs: int | None,
+    mode: str | None,
     no_log: bool,
 ) -> None:
     """Adapt the trajectory of CASE_FILE (OVITA case format) to its instruction.
@@ -128,7 +138,7 @@ def adapt(
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
     settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs,
-                              "log": False if no_log else None})  # fmt: skip
+                              "log": False if no_log else None, "mode": mode})  # fmt: skip
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = _make_backend(settings, options)
     out = out or Path(f"{case.name}.result.json")
@@ -171,7 +181,7 @@ def _make_backend(settings: Settings, pairs: tuple[tuple[str, str], ...]) -> Bac
 def _run_session(case: Case, backend: Backend, settings: Settings, yes: bool) -> AdaptationResult:
     store = Store(settings.log_path) if settings.log else None
     session_settings = SessionSettings(
-        axes=AXIS_CONVENTIONS[settings.axes], repair_attempts=settings.repair_attempts
+        axes=AXIS_CONVENTIONS[settings.axes], mode=settings.mode, repair_attempts=settings.repair_attempts
     )
     try:
         with Sandbox(isolation=settings.isolation) as sandbox, Progress() as progress:  # type: ignore[arg-type]
@@ -213,6 +223,82 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
         AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,
     )  # fmt: skip
     click.echo(f"Plot written to {plot_file}")
+
+
+@cli.command()
+@click.argument("cases", nargs=-1, required=True, type=click.Path(path_type=Path))
+@backend_option
+@option_option
+@click.option(
+    "--mode",
+    type=click.Choice(PROMPT_MODES),
+    default="skills",
+    show_default=True,
+    help="skills: the prompt lists the skill library; paper: only get_trajectory/detect_objects.",
+)
+@click.option(
+    "--out",
+    "out_dir",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="Output folder (default: bench-out/<mode>).",
+)
+@click.option(
+    "--jobs",
+    "-j",
+    type=click.IntRange(1, 64),
+    default=1,
+    show_default=True,
+    help="Cases in flight at once (useful against a served model: vLLM, Ollama).",
+)
+@click.option("--force", is_flag=True, help="Run cases again even if they have a result.")
+@click.option(
+    "--expectations",
+    type=click.Path(path_type=Path),
+    default=None,
+    help="Expectations TOML (default: CASES/expectations.toml or the packaged file).",
+)
+@click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+@click.option("--repairs", type=click.IntRange(0, 10), default=None, help="Repair rounds (default 2).")
+def bench(
+    cases: tuple[Path, ...],
+    backend: str | None,
+    options: tuple[tuple[str, str], ...],
+    mode: str,
+    out_dir: Path | None,
+    jobs: int,
+    force: bool,
+    expectations: Path | None,
+    axes: str | None,
+    repairs: int | None,
+) -> None:
+    """Run every case in CASES (files or folders) and score the results against expectations.
+
+    Writes one result file per case, summary.json, report.md and a figure per failed case into the
+    output folder. Cases that already have a result are skipped unless --force.
+    """
+    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs})
+    found = discover_cases(list(cases), expectations)
+    config = BenchConfig(
+        out_dir or Path("bench-out") / mode, mode, settings.axes, settings.repair_attempts, jobs, force
+    )
+    chosen = _make_backend(settings, options)
+    todo = sum(1 for case in found if force or not result_path(config, case).is_file())
+    click.echo(
+        f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {mode} -> {config.out_dir}"
+    )
+    try:
+        with click.progressbar(length=todo, label="adapting", show_eta=True, show_pos=True,
+                               item_show_func=lambda key: key, file=sys.stderr) as bar:  # fmt: skip
+            records = run_benchmark(found, chosen, config, lambda case, _record: bar.update(1, case.key))
+    finally:
+        chosen.close()
+    summary = write_report(config.out_dir, records)
+    overall = summary["overall"]
+    rate = "-" if overall["pass_rate"] is None else f"{100 * overall['pass_rate']:.1f}%"
+    click.echo(
+        f"passed {overall['passed']} of {overall['judged']} judged cases ({rate}); report: {config.out_dir / 'report.md'}"
+    )
 
 
 @cli.command()

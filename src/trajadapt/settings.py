@@ -31,6 +31,7 @@ class Settings:
         backend: the backend name used when none is given.
         backend_options: options for that backend (``[backend_options]`` in config.toml).
         axes: the coordinate convention stated in the prompt: ``paper`` (+X left) or ``ovita``.
+        mode: the prompt mode: ``skills`` (the skill library) or ``paper`` (the paper's prompt).
         repair_attempts: how often a failing code is sent back to the LLM before giving up.
         log: whether exchanges are logged to SQLite.
         isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
@@ -40,6 +41,7 @@ class Settings:
     backend: str = "local"
     backend_options: Mapping[str, Any] = field(default_factory=dict)
     axes: str = "paper"
+    mode: str = "skills"
     repair_attempts: int = 2
     log: bool = True
     isolation: str = "auto"
@@ -55,7 +57,7 @@ class Settings:
         return self.home / "config.toml"
 
 
-ENV_FIELDS = {"backend": str, "axes": str, "repair_attempts": int, "log": bool, "isolation": str}
+ENV_FIELDS = {"backend": str, "axes": str, "mode": str, "repair_attempts": int, "log": bool, "isolation": str}
 
 
 def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:

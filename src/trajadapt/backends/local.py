@@ -81,6 +81,7 @@ class LocalBackend(Backend):
     def __init__(self, options: Any = None, llama: Any = None) -> None:
         super().__init__(options)
         self._llama = llama
+        self._lock = threading.Lock()  # one llama.cpp context: one request at a time
 
     @property
     def model(self) -> str:
@@ -105,9 +106,10 @@ class LocalBackend(Backend):
     def complete(self, request: ChatRequest) -> Completion:
         """Generate an answer with llama.cpp; timings split into prefill and generation."""
         llama = self._llama or load_llama(self.model_path(), self.options.n_threads, self.options.n_ctx)
-        started = time.perf_counter()
-        chunks, first_token_s = self._stream(llama, request)
-        duration = time.perf_counter() - started
+        with self._lock:
+            started = time.perf_counter()
+            chunks, first_token_s = self._stream(llama, request)
+            duration = time.perf_counter() - started
         text = "".join(chunks)
         if not text.strip():
             raise EmptyCompletion("the local model returned an empty answer; try again or rephrase")

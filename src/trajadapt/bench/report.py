@@ -1,0 +1,180 @@
+"""Benchmark summary and markdown report: pass rates, failure reasons, shape metrics, latency, figures."""
+
+from __future__ import annotations
+
+import re
+import statistics
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from trajadapt.plot import plot_comparison
+from trajadapt.prompts import AXIS_CONVENTIONS
+from trajadapt.results import write_bytes_atomic, write_json_atomic
+from trajadapt.scene import Scene, parse_objects
+from trajadapt.trajectory import Trajectory
+
+
+def _subset(record: dict[str, Any]) -> str:
+    task = str(record["evaluation"]["task_id"])
+    parts = task.split("/")
+    return parts[1] if len(parts) > 2 else parts[0]
+
+
+def _rate(records: list[dict[str, Any]]) -> dict[str, Any]:
+    judged = [r for r in records if r["evaluation"]["judged"]]
+    passed = sum(1 for r in judged if r["evaluation"]["passed"])
+    executed = sum(1 for r in records if r["status"] == "ok")
+    return {
+        "cases": len(records),
+        "judged": len(judged),
+        "passed": passed,
+        "pass_rate": passed / len(judged) if judged else None,
+        "executable_rate": executed / len(records) if records else None,
+    }
+
+
+def failure_kind(record: dict[str, Any]) -> str:
+    """A short label for why a judged case failed: the error type, or the first failing check kind."""
+    if record["status"] != "ok":
+        match = re.match(r"(\w+)", str(record.get("error") or ""))
+        return "error: " + (match.group(1) if match else "unknown")
+    failed = [c["kind"] for c in record["evaluation"]["checks"] if not c["passed"]]
+    return "check: " + (failed[0] if failed else "none")
+
+
+def summarize(records: list[dict[str, Any]]) -> dict[str, Any]:
+    """Overall and per-subset pass rates, failure kinds, repairs, shape metrics, latency and tokens."""
+    latencies = [r["timings_s"]["total"] for r in records if r["timings_s"].get("total") is not None]
+    subsets = sorted({_subset(r) for r in records})
+    failed = [r for r in records if r["evaluation"]["judged"] and not r["evaluation"]["passed"]]
+    return {
+        "overall": _rate(records),
+        "subsets": {name: _rate([r for r in records if _subset(r) == name]) for name in subsets},
+        "failure_kinds": Counter(failure_kind(r) for r in failed).most_common(),
+        "repair_rounds": Counter(int(r.get("repair_rounds", 0)) for r in records).most_common(),
+        "latency_s": {
+            "median": statistics.median(latencies) if latencies else None,
+            "p90": float(np.percentile(latencies, 90)) if latencies else None,
+        },
+        "tokens": {
+            "prompt_mean": _mean([r.get("tokens", {}).get("prompt") for r in records]),
+            "completion_mean": _mean([r.get("tokens", {}).get("completion") for r in records]),
+        },
+        "shape": {
+            "frechet_median": _median([r["metrics"]["frechet"] for r in records]),
+            "dtw_median": _median([r["metrics"]["dtw"] for r in records]),
+            "roughness_ratio_median": _median(
+                [
+                    r["metrics"]["roughness"] / r["metrics"]["roughness_original"]
+                    for r in records
+                    if r["metrics"]["roughness"] is not None and r["metrics"]["roughness_original"]
+                ]
+            ),
+        },  # fmt: skip
+        "backend": records[0]["backend"] if records else None,
+        "model": records[0]["model"] if records else None,
+        "mode": records[0].get("mode") if records else None,
+    }
+
+
+def _mean(values: list[Any]) -> float | None:
+    numbers = [float(v) for v in values if v]
+    return sum(numbers) / len(numbers) if numbers else None
+
+
+def _median(values: list[Any]) -> float | None:
+    numbers = [float(v) for v in values if v is not None]
+    return statistics.median(numbers) if numbers else None
+
+
+def _percent(value: float | None) -> str:
+    return "-" if value is None else f"{100 * value:.1f}%"
+
+
+def _number(value: float | None, digits: int = 3) -> str:
+    return "-" if value is None else f"{value:.{digits}g}"
+
+
+def render_markdown(summary: dict[str, Any], records: list[dict[str, Any]]) -> str:
+    """The report: headline, per-subset table, failure kinds, metrics, then one row per case."""
+    overall = summary["overall"]
+    lines = [
+        f"# Benchmark: {summary['backend']} ({summary['model']}), prompt mode {summary['mode']}",
+        "",
+        f"Passed **{overall['passed']} of {overall['judged']}** judged cases ({_percent(overall['pass_rate'])}); "
+        f"{overall['cases'] - overall['judged']} not judged; code ran to a valid trajectory in "
+        f"{_percent(overall['executable_rate'])} of {overall['cases']} cases.",
+        "",
+        "| subset | cases | judged | passed | pass rate | executable |",
+        "|---|---|---|---|---|---|",
+    ]
+    for name, rate in summary["subsets"].items():
+        lines.append(
+            f"| {name} | {rate['cases']} | {rate['judged']} | {rate['passed']} | {_percent(rate['pass_rate'])} | {_percent(rate['executable_rate'])} |"
+        )
+    latency, tokens, shape = summary["latency_s"], summary["tokens"], summary["shape"]
+    lines += [
+        "",
+        f"Latency per case: median {_number(latency['median'])} s, 90th percentile {_number(latency['p90'])} s. "
+        f"Tokens per case: prompt {_number(tokens['prompt_mean'], 4)}, completion {_number(tokens['completion_mean'], 4)} (mean).",
+        f"Shape: median discrete Fréchet {_number(shape['frechet_median'])}, median DTW {_number(shape['dtw_median'])}, "
+        f"median roughness ratio (adapted / original) {_number(shape['roughness_ratio_median'])}.",
+        "",
+        "Repair rounds used: "
+        + ", ".join(f"{n} round(s): {count} case(s)" for n, count in sorted(summary["repair_rounds"])),
+        "",
+        "## Most common failure kinds",
+        "",
+        *[f"- {kind}: {count}" for kind, count in summary["failure_kinds"]],
+        "",
+        "## Cases",
+        "",
+        "| case | instruction | result | reason |",
+        "|---|---|---|---|",
+    ]
+    for record in records:
+        evaluation = record["evaluation"]
+        verdict = (
+            "not judged" if not evaluation["judged"] else ("pass" if evaluation["passed"] else "**fail**")
+        )
+        reason = str(evaluation.get("reason") or "").replace("|", "/")[:160]
+        figure = (
+            f" ([figure](figures/{_figure_name(record)}))"
+            if evaluation["judged"] and not evaluation["passed"]
+            else ""
+        )
+        lines.append(
+            f"| {evaluation['task_id']} | {record['instruction'][:70].replace('|', '/')} | {verdict}{figure} | {reason} |"
+        )
+    return "\n".join(lines) + "\n"
+
+
+def _figure_name(record: dict[str, Any]) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", str(record["evaluation"]["task_id"])) + ".png"
+
+
+def write_report(out_dir: Path, records: list[dict[str, Any]]) -> dict[str, Any]:
+    """Write summary.json, report.md and a figure per failed case into ``out_dir``; return the summary."""
+    summary = summarize(records)
+    write_json_atomic(out_dir / "summary.json", summary)
+    write_bytes_atomic(out_dir / "report.md", render_markdown(summary, records).encode("utf-8"))
+    for record in records:
+        if record["evaluation"]["judged"] and not record["evaluation"]["passed"]:
+            _figure(out_dir / "figures" / _figure_name(record), record)
+    return summary
+
+
+def _figure(path: Path, record: dict[str, Any]) -> None:
+    adapted = record.get("modified_trajectory")
+    scene = Scene(parse_objects(record.get("objects"), "result objects"))
+    plot_comparison(
+        Trajectory(np.asarray(record["original_trajectory"])),
+        Trajectory(np.asarray(adapted)) if adapted else None,
+        scene,
+        path,
+        AXIS_CONVENTIONS[record.get("axes", "paper")],
+        title=f"{record['instruction']} [FAIL: {failure_kind(record)}]",
+    )

@@ -1,0 +1,262 @@
+"""Benchmark runner: every case non-interactively (first plan approved, repair on), scored and saved.
+
+Results go to ``OUT/<path of the case relative to the folder given>/<stem>.result.json``, so cases
+with the same file name in different subfolders never collide. A case with a result file is skipped
+unless ``force`` is set, so an interrupted run resumes where it stopped.
+"""
+
+from __future__ import annotations
+
+import json
+import queue
+import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import ThreadPoolExecutor
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from trajadapt.backends.base import Backend
+from trajadapt.bench.checks import CheckContext, run_check
+from trajadapt.bench.expectations import EXPECTATIONS_FILENAME, ExpectationSet, find_expectations
+from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, roughness
+from trajadapt.case import Case, load_case
+from trajadapt.errors import InputError, TrajadaptError
+from trajadapt.prompts import AXIS_CONVENTIONS
+from trajadapt.results import write_json_atomic
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationSession, SessionSettings
+from trajadapt.skills.core import Axes
+
+
+@dataclass(frozen=True)
+class BenchCase:
+    """One case file found under a folder given to the benchmark."""
+
+    key: str
+    path: Path
+    expectations: ExpectationSet | None
+
+    @property
+    def subset(self) -> str:
+        """The first folder of the key ('latte_subset'), or the folder's name for flat folders."""
+        return (
+            self.key.split("/")[0]
+            if "/" in self.key
+            else (self.expectations.name if self.expectations else ".")
+        )
+
+
+@dataclass(frozen=True)
+class BenchConfig:
+    """How to run: prompt mode, axes, repairs, output folder, parallel jobs, re-run or resume."""
+
+    out_dir: Path
+    mode: str = "skills"
+    axes: str = "paper"
+    repair_attempts: int = 2
+    jobs: int = 1
+    force: bool = False
+
+
+def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
+    """Every case file under ``paths`` (files or folders), with the expectations that go with it.
+
+    Raises:
+        InputError: a path does not exist.
+    """
+    cases: list[BenchCase] = []
+    for path in paths:
+        if path.is_file():
+            cases.append(_single_case(path, expectations_file))
+            continue
+        if path.is_dir():
+            folder = path
+            files = sorted(p for p in path.rglob("*.json") if not p.name.endswith(".result.json"))
+        else:
+            raise InputError(f"{path}: no such case file or folder")
+        expectations = find_expectations(folder, expectations_file)
+        for file in files:
+            key = str(file.relative_to(folder).with_suffix(""))
+            cases.append(BenchCase(key, file, expectations))
+    return cases
+
+
+def _single_case(path: Path, expectations_file: Path | None) -> BenchCase:
+    """A case file given alone: its key is relative to the nearest folder whose expectations name it."""
+    for folder in path.parents:
+        expectations = find_expectations(folder, expectations_file)
+        key = str(path.relative_to(folder).with_suffix(""))
+        if expectations is not None and key in expectations.cases:
+            return BenchCase(key, path, expectations)
+    return BenchCase(path.stem, path, None)
+
+
+def result_path(config: BenchConfig, case: BenchCase) -> Path:
+    """Where the result of ``case`` is written."""
+    return config.out_dir / f"{case.key}.result.json"
+
+
+ProgressCallback = Callable[[BenchCase, dict[str, Any]], None]
+
+
+def run_benchmark(
+    cases: list[BenchCase],
+    backend: Backend,
+    config: BenchConfig,
+    on_case_done: ProgressCallback | None = None,
+) -> list[dict[str, Any]]:
+    """Run the cases that have no result yet (all with ``force``); return every case's record."""
+    todo = [case for case in cases if config.force or not result_path(config, case).is_file()]
+    with _sandbox_pool(max(config.jobs, 1)) as sandboxes, ThreadPoolExecutor(max(config.jobs, 1)) as pool:
+        futures = [pool.submit(_run_and_save, case, backend, config, sandboxes) for case in todo]
+        for case, future in zip(todo, futures, strict=True):
+            record = future.result()
+            if on_case_done is not None:
+                on_case_done(case, record)
+    return [
+        json.loads(result_path(config, case).read_text())
+        for case in cases
+        if result_path(config, case).is_file()
+    ]
+
+
+@contextmanager
+def _sandbox_pool(size: int) -> Iterator[queue.Queue[Sandbox]]:
+    sandboxes: queue.Queue[Sandbox] = queue.Queue()
+    created = [Sandbox() for _ in range(size)]
+    for sandbox in created:
+        sandboxes.put(sandbox)
+    try:
+        yield sandboxes
+    finally:
+        for sandbox in created:
+            sandbox.close()
+
+
+def _run_and_save(
+    case: BenchCase, backend: Backend, config: BenchConfig, sandboxes: queue.Queue[Sandbox]
+) -> dict[str, Any]:
+    sandbox = sandboxes.get()
+    try:
+        record = run_case(case, backend, sandbox, config)
+    finally:
+        sandboxes.put(sandbox)
+    write_json_atomic(result_path(config, case), record)
+    return record
+
+
+def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchConfig) -> dict[str, Any]:
+    """Adapt one case (first plan approved) and score it; failures become an error record, not an exception."""
+    loaded = load_case(case.path)
+    settings = SessionSettings(
+        axes=AXIS_CONVENTIONS[config.axes], mode=config.mode, repair_attempts=config.repair_attempts
+    )
+    session = AdaptationSession(loaded, backend, sandbox, settings)
+    started = time.perf_counter()
+    try:
+        session.draft()
+        record = session.approve().to_dict()
+    except TrajadaptError as exc:
+        record = _error_record(loaded, session, backend, exc, time.perf_counter() - started)
+    record["mode"] = config.mode
+    record["axes"] = config.axes
+    record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
+    record["evaluation"] = evaluate(
+        case, loaded, record, Axes.from_positive_x(AXIS_CONVENTIONS[config.axes].positive_x)
+    )
+    record["metrics"] = shape_metrics(loaded, record)
+    return record
+
+
+def _error_record(
+    case: Case, session: AdaptationSession, backend: Backend, exc: Exception, elapsed: float
+) -> dict[str, Any]:
+    plan = session.plan
+    return {
+        "case": case.name,
+        "case_source": str(case.source),
+        "instruction": case.instruction,
+        "high_level_plan": list(plan.steps) if plan else [],
+        "code": plan.code if plan else "",
+        "modified_trajectory": None,
+        "original_trajectory": case.trajectory.to_rows(),
+        "objects": [obj.to_dict() for obj in case.scene.objects],
+        "status": "error",
+        "error": f"{type(exc).__name__}: {exc}",
+        "attempts": 0,
+        "backend": backend.name,
+        "model": backend.model,
+        "timings_s": {"llm": None, "exec": None, "total": round(elapsed, 4)},
+        "tokens": {},
+        "review_notes": [],
+        "stdout": "",
+    }
+
+
+def evaluate(case: BenchCase, loaded: Case, record: dict[str, Any], axes: Axes) -> dict[str, Any]:
+    """Run the case's expectation checks on a result record."""
+    expectation = case.expectations.cases.get(case.key) if case.expectations else None
+    base = {"task_id": case.expectations.task_id(case.key) if case.expectations else case.key}
+    if expectation is None:
+        return {
+            **base,
+            "judged": False,
+            "passed": None,
+            "reason": f"no expectations (add them to {EXPECTATIONS_FILENAME})",
+            "checks": [],
+        }
+    if expectation.skip:
+        return {
+            **base,
+            "judged": False,
+            "passed": None,
+            "reason": f"not judged: {expectation.skip}",
+            "checks": [],
+        }
+    if record["status"] != "ok":
+        return {
+            **base,
+            "judged": True,
+            "passed": False,
+            "reason": "no trajectory: " + str(record["error"])[:200],
+            "checks": [],
+        }
+    context = CheckContext(
+        original=loaded.trajectory.array,
+        adapted=np.asarray(record["modified_trajectory"], dtype=np.float64),
+        objects={obj.name.casefold(): np.asarray(obj.position) for obj in loaded.scene.objects},
+        axes=axes,
+    )
+    verdicts = [run_check(context, dict(spec)) for spec in expectation.checks]
+    failed = [v for v in verdicts if not v.passed]
+    reason = "; ".join(f"{v.kind}: {v.detail}" for v in failed)
+    return {
+        **base,
+        "judged": True,
+        "passed": not failed,
+        "reason": reason,
+        "checks": [{"kind": v.kind, "passed": v.passed, "detail": v.detail} for v in verdicts],
+    }
+
+
+def shape_metrics(case: Case, record: dict[str, Any]) -> dict[str, float | None]:
+    """Fréchet and DTW distance to the original, and roughness before and after."""
+    if record.get("modified_trajectory") is None:
+        return {
+            "frechet": None,
+            "dtw": None,
+            "roughness": None,
+            "roughness_original": roughness(case.trajectory.array),
+        }
+    adapted = np.asarray(record["modified_trajectory"], dtype=np.float64)
+    original = case.trajectory.array
+    return {
+        "frechet": discrete_frechet(original, adapted),
+        "dtw": dynamic_time_warping(original, adapted),
+        "roughness": roughness(adapted),
+        "roughness_original": roughness(original),
+    }

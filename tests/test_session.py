@@ -181,3 +181,12 @@ def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandb
     result = session.approve()
     assert result.trajectory is not None and np.isclose(result.trajectory.positions[-1, 0], -0.3)
     assert "The positive X axis is right" in backend.requests[0].messages[0].content
+
+
+def test_discarded_skill_results_are_kept(simple_case: Case, sandbox: Sandbox) -> None:
+    code = "t = get_trajectory()\nshift(t, 'left', 0.3)\nmodified_trajectory = t\n"
+    session, _ = make_session(simple_case, sandbox, answer("1) Shift left.", code))
+    session.draft()
+    result = session.approve()
+    assert result.trajectory is not None and np.isclose(result.trajectory.positions[-1, 0], 0.3)
+    assert any("result of shift() was not kept" in note.message for note in result.notes)

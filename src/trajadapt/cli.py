@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import logging
-import sys
 from datetime import datetime
 from pathlib import Path
 from typing import Any
@@ -16,7 +15,7 @@ from trajadapt.backends.registry import backend_class, get_backend, registered_b
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.case import Case, load_case, load_case_from_parts
-from trajadapt.console import Progress, show_plan, show_result
+from trajadapt.console import CaseProgress, Progress, show_plan, show_result
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
@@ -288,17 +287,26 @@ def bench(
         f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {mode} -> {config.out_dir}"
     )
     try:
-        with click.progressbar(length=todo, label="adapting", show_eta=True, show_pos=True,
-                               item_show_func=lambda key: key, file=sys.stderr) as bar:  # fmt: skip
-            records = run_benchmark(found, chosen, config, lambda case, _record: bar.update(1, case.key))
+        with CaseProgress(todo) as progress:
+            records = run_benchmark(
+                found, chosen, config, lambda case, record: progress.advance(case.key, _outcome(record))
+            )
     finally:
         chosen.close()
     summary = write_report(config.out_dir, records)
     overall = summary["overall"]
     rate = "-" if overall["pass_rate"] is None else f"{100 * overall['pass_rate']:.1f}%"
-    click.echo(
-        f"passed {overall['passed']} of {overall['judged']} judged cases ({rate}); report: {config.out_dir / 'report.md'}"
-    )
+    report = config.out_dir / "report.md"
+    click.echo(f"passed {overall['passed']} of {overall['judged']} judged cases ({rate}); report: {report}")
+
+
+def _outcome(record: dict[str, Any]) -> str:
+    evaluation = record["evaluation"]
+    if record["status"] != "ok":
+        return "error: " + str(record["error"])[:80]
+    if not evaluation["judged"]:
+        return "not judged"
+    return "pass" if evaluation["passed"] else "fail: " + str(evaluation["reason"])[:80]
 
 
 @cli.command()

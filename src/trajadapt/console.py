@@ -84,3 +84,45 @@ def show_result(result: AdaptationResult) -> None:
         f"Time: llm {timings.llm_s:.1f} s, execution {timings.exec_s * 1000:.0f} ms, "
         f"total {timings.total_s:.1f} s ({result.backend}, {result.model})"
     )
+
+
+class CaseProgress:
+    """Progress over many cases: click's bar with ETA on a terminal, one line per case otherwise."""
+
+    def __init__(self, total: int, stream: TextIO | None = None) -> None:
+        self.total = total
+        self.stream = stream or sys.stderr
+        self.done = 0
+        self.started = time.monotonic()
+        self._bar = (
+            click.progressbar(length=total, label="adapting", show_eta=True, show_pos=True, file=self.stream)
+            if self.stream.isatty()
+            else None
+        )
+
+    def __enter__(self) -> CaseProgress:
+        if self._bar is not None:
+            self._bar.__enter__()
+        return self
+
+    def __exit__(
+        self,
+        exc_type: type[BaseException] | None,
+        exc: BaseException | None,
+        tb: TracebackType | None,
+    ) -> None:
+        if self._bar is not None:
+            self._bar.__exit__(exc_type, exc, tb)
+
+    def advance(self, name: str, outcome: str) -> None:
+        """One case finished with ``outcome`` ('pass', 'fail', 'error', 'not judged')."""
+        self.done += 1
+        if self._bar is not None:
+            self._bar.update(1)
+            return
+        elapsed = time.monotonic() - self.started
+        remaining = elapsed / self.done * (self.total - self.done)
+        click.echo(
+            f"[{self.done}/{self.total}] {name}: {outcome} (elapsed {elapsed:.0f} s, ETA {remaining:.0f} s)",
+            file=self.stream,
+        )

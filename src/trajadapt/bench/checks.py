@@ -128,7 +128,7 @@ def _goal_kept(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 
 @check("distance")
 def _distance(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """Distance to an object: 'decreased' / 'increased' (near part of the path), or 'at_least' d (everywhere)."""
+    """Distance to an object: 'decreased' / 'increased' near it, or 'at_least' value everywhere."""
     target = ctx.point(p)
     relation = p["relation"]
     if "first" in p:  # only the first n waypoints count ("shift the first 6 points closer")
@@ -291,7 +291,7 @@ def _waypoints(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 
 @check("pause")
 def _pause(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """The robot stands still (repeated position, speed 0) for at least 'steps' waypoints, near 'object' if given."""
+    """The robot stands still (repeated position, speed 0) for 'steps' waypoints, near 'object' if given."""
     still = (np.linalg.norm(np.diff(ctx.adapted[:, :3], axis=0), axis=1) <= 1e-9 * ctx.size) & (
         ctx.adapted[1:, 3] <= 1e-9
     )
@@ -341,7 +341,7 @@ def _smooth(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 
 @check("zigzag")
 def _zigzag(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """The path weaves sideways around the original: the lateral offset changes sign at least 'swings' times."""
+    """The path weaves sideways: its lateral offset changes sign at least 'swings' times."""
     s = np.linspace(0.05, 0.95, 200)
     offset = _at_progress(ctx.adapted, s)[:, :3] - _at_progress(ctx.original, s)[:, :3]
     lateral = offset @ np.cross(
@@ -372,7 +372,7 @@ def _changed(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 
 @check("rotated")
 def _rotated(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """The start-to-goal heading turned by 'degrees' (clockwise seen from above is positive), within 20 degrees."""
+    """The start-to-goal heading turned by 'degrees' (clockwise from above is positive), within 20."""
     right, front = ctx.axes.vector("right"), ctx.axes.vector("front")
 
     def heading(t: Array) -> float:

@@ -62,8 +62,9 @@ def load_expectations(path: Path, name: str) -> ExpectationSet:
         checks = tuple(entry.get("checks", ()))
         for spec in checks:
             if spec.get("kind") not in CHECKS:
+                known = ", ".join(sorted(CHECKS))
                 raise InputError(
-                    f"{path}: case {key!r} uses unknown check kind {spec.get('kind')!r}; known: {', '.join(sorted(CHECKS))}"
+                    f"{path}: case {key!r} uses unknown check kind {spec.get('kind')!r}; known: {known}"
                 )
         if not checks and not entry.get("skip"):
             raise InputError(f"{path}: case {key!r} has neither checks nor a skip reason")
@@ -74,8 +75,11 @@ def load_expectations(path: Path, name: str) -> ExpectationSet:
 
 
 def find_expectations(folder: Path, explicit: Path | None = None) -> ExpectationSet | None:
-    """The expectations for a case folder: ``explicit``, ``folder/expectations.toml``, or the packaged
-    file named after the folder (``ovita-dev.toml`` for the OVITA cases); None when there is none."""
+    """The expectations for a case folder, or None when there are none.
+
+    Looked up in order: ``explicit``, ``folder/expectations.toml``, the packaged file named after the
+    folder (``ovita-dev.toml`` for the OVITA cases).
+    """
     if explicit is not None:
         return load_expectations(explicit, folder.name)
     beside = folder / EXPECTATIONS_FILENAME

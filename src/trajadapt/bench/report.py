@@ -100,31 +100,24 @@ def _number(value: float | None, digits: int = 3) -> str:
 
 def render_markdown(summary: dict[str, Any], records: list[dict[str, Any]]) -> str:
     """The report: headline, per-subset table, failure kinds, metrics, then one row per case."""
-    overall = summary["overall"]
-    lines = [
-        f"# Benchmark: {summary['backend']} ({summary['model']}), prompt mode {summary['mode']}",
-        "",
-        f"Passed **{overall['passed']} of {overall['judged']}** judged cases ({_percent(overall['pass_rate'])}); "
-        f"{overall['cases'] - overall['judged']} not judged; code ran to a valid trajectory in "
-        f"{_percent(overall['executable_rate'])} of {overall['cases']} cases.",
-        "",
-        "| subset | cases | judged | passed | pass rate | executable |",
-        "|---|---|---|---|---|---|",
-    ]
+    lines = [f"# Benchmark: {summary['backend']} ({summary['model']}), prompt mode {summary['mode']}", ""]
+    lines += [_headline(summary["overall"]), ""]
+    lines += ["| subset | cases | judged | passed | pass rate | executable |", "|---|---|---|---|---|---|"]
     for name, rate in summary["subsets"].items():
-        lines.append(
-            f"| {name} | {rate['cases']} | {rate['judged']} | {rate['passed']} | {_percent(rate['pass_rate'])} | {_percent(rate['executable_rate'])} |"
-        )
+        cells = [name, rate["cases"], rate["judged"], rate["passed"], _percent(rate["pass_rate"])]
+        lines.append("| " + " | ".join(str(c) for c in cells) + f" | {_percent(rate['executable_rate'])} |")
     latency, tokens, shape = summary["latency_s"], summary["tokens"], summary["shape"]
+    rounds = ", ".join(f"{n} round(s): {count} case(s)" for n, count in sorted(summary["repair_rounds"]))
     lines += [
         "",
-        f"Latency per case: median {_number(latency['median'])} s, 90th percentile {_number(latency['p90'])} s. "
-        f"Tokens per case: prompt {_number(tokens['prompt_mean'], 4)}, completion {_number(tokens['completion_mean'], 4)} (mean).",
-        f"Shape: median discrete Fréchet {_number(shape['frechet_median'])}, median DTW {_number(shape['dtw_median'])}, "
-        f"median roughness ratio (adapted / original) {_number(shape['roughness_ratio_median'])}.",
+        f"Latency per case: median {_number(latency['median'])} s, "
+        f"90th percentile {_number(latency['p90'])} s.",
+        f"Tokens per case (mean): prompt {_number(tokens['prompt_mean'], 4)}, "
+        f"completion {_number(tokens['completion_mean'], 4)}.",
+        f"Shape: median discrete Fréchet {_number(shape['frechet_median'])}, median DTW "
+        f"{_number(shape['dtw_median'])}, median roughness ratio {_number(shape['roughness_ratio_median'])}.",
         "",
-        "Repair rounds used: "
-        + ", ".join(f"{n} round(s): {count} case(s)" for n, count in sorted(summary["repair_rounds"])),
+        "Repair rounds used: " + rounds,
         "",
         "## Most common failure kinds",
         "",
@@ -135,21 +128,26 @@ def render_markdown(summary: dict[str, Any], records: list[dict[str, Any]]) -> s
         "| case | instruction | result | reason |",
         "|---|---|---|---|",
     ]
-    for record in records:
-        evaluation = record["evaluation"]
-        verdict = (
-            "not judged" if not evaluation["judged"] else ("pass" if evaluation["passed"] else "**fail**")
-        )
-        reason = str(evaluation.get("reason") or "").replace("|", "/")[:160]
-        figure = (
-            f" ([figure](figures/{_figure_name(record)}))"
-            if evaluation["judged"] and not evaluation["passed"]
-            else ""
-        )
-        lines.append(
-            f"| {evaluation['task_id']} | {record['instruction'][:70].replace('|', '/')} | {verdict}{figure} | {reason} |"
-        )
+    lines += [_case_row(record) for record in records]
     return "\n".join(lines) + "\n"
+
+
+def _headline(overall: dict[str, Any]) -> str:
+    return (
+        f"Passed **{overall['passed']} of {overall['judged']}** judged cases "
+        f"({_percent(overall['pass_rate'])}); {overall['cases'] - overall['judged']} not judged; the code "
+        f"ran to a valid trajectory in {_percent(overall['executable_rate'])} of {overall['cases']} cases."
+    )
+
+
+def _case_row(record: dict[str, Any]) -> str:
+    evaluation = record["evaluation"]
+    failed = evaluation["judged"] and not evaluation["passed"]
+    verdict = "not judged" if not evaluation["judged"] else ("**fail**" if failed else "pass")
+    figure = f" ([figure](figures/{_figure_name(record)}))" if failed else ""
+    reason = str(evaluation.get("reason") or "").replace("|", "/")[:160]
+    instruction = record["instruction"][:70].replace("|", "/")
+    return f"| {evaluation['task_id']} | {instruction} | {verdict}{figure} | {reason} |"
 
 
 def _figure_name(record: dict[str, Any]) -> str:

@@ -150,7 +150,7 @@ def _run_and_save(
 
 
 def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchConfig) -> dict[str, Any]:
-    """Adapt one case (first plan approved) and score it; failures become an error record, not an exception."""
+    """Adapt one case (first plan approved) and score it; failures become an error record."""
     loaded = load_case(case.path)
     settings = SessionSettings(
         axes=AXIS_CONVENTIONS[config.axes], mode=config.mode, repair_attempts=config.repair_attempts

@@ -10,6 +10,7 @@ writes its result to a pipe. The worker enforces the wall-clock limit and report
 
 from __future__ import annotations
 
+import ast
 import json
 import os
 import resource
@@ -27,7 +28,8 @@ from trajadapt.sandbox import seccomp
 from trajadapt.sandbox.api import RESULT_VARIABLE, build_api
 from trajadapt.sandbox.guard import check_code
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
-from trajadapt.skills import Axes, bind_skills
+from trajadapt.sandbox.rewrite import assign_discarded_results
+from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
 
 GENERATED_FILENAME = "<generated>"
 RESULT_FD = 3
@@ -185,12 +187,14 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
         return {**_error("Rejected", violation.message, violation.line), "stdout": ""}
     output = BoundedOutput(int(job["max_output_chars"]))
     api, calls = build_api(job["trajectory"], job["objects"])
+    tree = ast.parse(job["code"], GENERATED_FILENAME)
+    notes: list[str] = []
     if job.get("skills"):
         api.update(bind_skills(Axes.from_positive_x(job.get("positive_x", "left"))))
+        notes += assign_discarded_results(tree, SKILL_NAMES)
     namespace = _namespace(api, modules, output)
-    notes: list[str] = []
     try:
-        exec(compile(job["code"], GENERATED_FILENAME, "exec"), namespace)  # noqa: S102
+        exec(compile(tree, GENERATED_FILENAME, "exec"), namespace)  # noqa: S102
         rows = _result_rows(namespace, set(api), notes if job.get("accept_last") else None)
     except MemoryError:
         result = _error("MemoryError", f"the code used more than {job['memory_mb']} MB of memory")

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion, Usage
+from trajadapt.backends.prompt_state import PromptStateCache
 from trajadapt.errors import BackendUnavailable, DependencyNotInstalled, EmptyCompletion
 from trajadapt.model_file import MODEL_FILENAME, ensure_model
 from trajadapt.settings import default_home
@@ -28,6 +29,8 @@ class LocalOptions:
         n_threads: CPU threads for llama.cpp.
         n_ctx: context window in tokens.
         json_schema: constrain the answer to the plan/code JSON schema (slower per token).
+        prompt_cache: save llama.cpp's state after the fixed prompt to disk, so that a new process
+            does not read the whole prompt again.
     """
 
     model_path: Path | None = None
@@ -35,6 +38,7 @@ class LocalOptions:
     n_threads: int = 2
     n_ctx: int = 4096
     json_schema: bool = False
+    prompt_cache: bool = True
 
 
 ANSWER_SCHEMA = {
@@ -94,22 +98,41 @@ class LocalBackend(Backend):
         return f"local: {self.model} on llama.cpp, {self.options.n_threads} thread(s)"
 
     def model_path(self) -> Path:
-        """The GGUF file to load: the user's (header-checked), or the verified embedded model."""
+        """The GGUF file to load: the user's, or the verified embedded model."""
         if self.options.model_path is not None:
             path = Path(self.options.model_path).expanduser()
             if not path.is_file():
                 raise BackendUnavailable(f"model_path {path} does not exist")
             return path
-        cache_dir = Path(self.options.cache_dir or default_home() / "models")
-        return ensure_model(cache_dir)
+        return ensure_model(self._cache_dir())
+
+    def _cache_dir(self) -> Path:
+        return Path(self.options.cache_dir or default_home() / "models")
+
+    def _prompt_states(self, model: Path) -> PromptStateCache | None:
+        if self._llama is not None or not self.options.prompt_cache:
+            return None
+        import llama_cpp
+
+        key = f"{model.name}:{model.stat().st_size}:{self.options.n_ctx}:{llama_cpp.__version__}"
+        return PromptStateCache(self._cache_dir() / "prompt-state", key)
 
     def complete(self, request: ChatRequest) -> Completion:
         """Generate an answer with llama.cpp; timings split into prefill and generation."""
-        llama = self._llama or load_llama(self.model_path(), self.options.n_threads, self.options.n_ctx)
+        if self._llama is not None:
+            llama, states = self._llama, None
+        else:
+            model = self.model_path()
+            llama = load_llama(model, self.options.n_threads, self.options.n_ctx)
+            states = self._prompt_states(model)
+        prefix = request.messages[0].content if request.messages else ""
         with self._lock:
             started = time.perf_counter()
+            restored = states.restore(llama, prefix) if states else 0
             chunks, first_token_s = self._stream(llama, request)
             duration = time.perf_counter() - started
+            if states and not restored and not states.path_for(prefix).exists():
+                states.save(llama, prefix)
         text = "".join(chunks)
         if not text.strip():
             raise EmptyCompletion("the local model returned an empty answer; try again or rephrase")
@@ -119,7 +142,11 @@ class LocalBackend(Backend):
             model=self.model,
             usage=usage,
             duration_s=duration,
-            details={"prefill_s": first_token_s, "generation_s": duration - first_token_s},
+            details={
+                "prefill_s": first_token_s,
+                "generation_s": duration - first_token_s,
+                "restored_prompt_tokens": restored,
+            },
         )
 
     def _stream(self, llama: Any, request: ChatRequest) -> tuple[list[str], float]:

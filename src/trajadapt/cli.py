@@ -15,8 +15,8 @@ from trajadapt.backends.registry import backend_class, get_backend, registered_b
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.case import Case, load_case, load_case_from_parts
-from trajadapt.constraints import Constraints
 from trajadapt.console import CaseProgress, Progress, show_plan, show_result
+from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES

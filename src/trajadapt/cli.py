@@ -21,7 +21,7 @@ from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.results import write_json_atomic
-from trajadapt.sandbox.runner import Sandbox
+from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
 from trajadapt.store import Store
@@ -139,6 +139,8 @@ def adapt(
     axes: str | None,
     repairs: int | None,
     mode: str | None,
+    temperature: float | None,
+    seed: int | None,
     project_onto: bool,
     clearance: float | None,
     max_speed: float | None,
@@ -148,8 +150,8 @@ def adapt(
 
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
-    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs,
-                              "log": False if no_log else None, "mode": mode})  # fmt: skip
+    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode,
+                              "log": False if no_log else None, "temperature": temperature, "seed": seed})  # fmt: skip
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = _make_backend(settings, options)
     out = out or Path(f"{case.name}.result.json")
@@ -198,11 +200,13 @@ def _run_session(
         axes=AXIS_CONVENTIONS[settings.axes],
         mode=settings.mode,
         repair_attempts=settings.repair_attempts,
+        temperature=settings.temperature,
+        seed=settings.seed,
         constraints=limits,
         project=project_onto,
     )
     try:
-        with Sandbox(isolation=settings.isolation) as sandbox, Progress() as progress:  # type: ignore[arg-type]
+        with Sandbox(isolation=_isolation(settings)) as sandbox, Progress() as progress:
             session = AdaptationSession(case, backend, sandbox, session_settings, store, progress.update)
             click.echo(f"Case {case.name}: {case.instruction}")
             show_plan(session.draft())
@@ -215,6 +219,12 @@ def _run_session(
             store.close()
     show_result(result)
     return result
+
+
+def _isolation(settings: Settings) -> Isolation:
+    if settings.isolation not in ("auto", "bwrap", "process"):
+        raise InputError(f"isolation must be auto, bwrap or process, not {settings.isolation!r}")
+    return settings.isolation  # type: ignore[return-value]
 
 
 def _review(session: AdaptationSession) -> bool:

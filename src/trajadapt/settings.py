@@ -32,6 +32,8 @@ class Settings:
         backend_options: options for that backend (``[backend_options]`` in config.toml).
         axes: the coordinate convention stated in the prompt: ``paper`` (+X left) or ``ovita``.
         mode: the prompt mode: ``skills`` (the skill library) or ``paper`` (the paper's prompt).
+        temperature: sampling temperature; 0 (the default) is deterministic.
+        seed: sampling seed, for reproducible answers at a temperature above 0.
         repair_attempts: how often a failing code is sent back to the LLM before giving up.
         log: whether exchanges are logged to SQLite.
         isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
@@ -42,6 +44,8 @@ class Settings:
     backend_options: Mapping[str, Any] = field(default_factory=dict)
     axes: str = "paper"
     mode: str = "skills"
+    temperature: float = 0.0
+    seed: int = 0
     repair_attempts: int = 2
     log: bool = True
     isolation: str = "auto"
@@ -57,7 +61,16 @@ class Settings:
         return self.home / "config.toml"
 
 
-ENV_FIELDS = {"backend": str, "axes": str, "mode": str, "repair_attempts": int, "log": bool, "isolation": str}
+ENV_FIELDS = {
+    "backend": str,
+    "axes": str,
+    "mode": str,
+    "temperature": float,
+    "seed": int,
+    "repair_attempts": int,
+    "log": bool,
+    "isolation": str,
+}
 
 
 def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:

@@ -166,7 +166,10 @@ class Sandbox:
                 return answer
             logger.warning("sandbox worker died (attempt %d); restarting it", attempt + 1)
             self.close()
-        raise SandboxError("the sandbox worker keeps dying; run 'trajadapt doctor' to check it")
+        raise SandboxError(
+            "the sandbox worker keeps dying; check that 'bwrap --unshare-all true' works, or run "
+            "without bubblewrap: TRAJADAPT_ISOLATION=process"
+        )
 
     def _ensure_worker(self) -> subprocess.Popen[str]:
         if self._process is not None and self._process.poll() is None:

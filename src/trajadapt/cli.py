@@ -150,8 +150,8 @@ def adapt(
 
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
-    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode,
-                              "log": False if no_log else None, "temperature": temperature, "seed": seed})  # fmt: skip
+    overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed}
+    settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = _make_backend(settings, options)
     out = out or Path(f"{case.name}.result.json")

@@ -281,6 +281,9 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
 )
 @click.option("--force", is_flag=True, help="Run cases again even if they have a result.")
 @click.option(
+    "--rescore", is_flag=True, help="Only judge the stored results again (after the checks changed)."
+)
+@click.option(
     "--expectations",
     type=click.Path(path_type=Path),
     default=None,
@@ -296,6 +299,7 @@ def bench(
     out_dir: Path | None,
     jobs: int,
     force: bool,
+    rescore: bool,
     expectations: Path | None,
     axes: str | None,
     repairs: int | None,
@@ -322,6 +326,10 @@ def bench(
             )
     finally:
         chosen.close()
+    _report(config, records)
+
+
+def _report(config: BenchConfig, records: list[dict[str, Any]]) -> None:
     summary = write_report(config.out_dir, records)
     overall = summary["overall"]
     rate = "-" if overall["pass_rate"] is None else f"{100 * overall['pass_rate']:.1f}%"

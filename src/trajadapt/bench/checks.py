@@ -342,18 +342,19 @@ def _smooth(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 @check("zigzag")
 def _zigzag(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
     """The path weaves sideways: its lateral offset changes sign at least 'swings' times."""
-    s = np.linspace(0.05, 0.95, 200)
-    offset = _at_progress(ctx.adapted, s)[:, :3] - _at_progress(ctx.original, s)[:, :3]
-    lateral = offset @ np.cross(
-        _at_progress(ctx.original, s)[:, :3][-1] - _at_progress(ctx.original, s)[:, :3][0],
-        ctx.axes.vector("up"),
-    )
-    significant = np.abs(lateral) > 0.01 * ctx.size * np.linalg.norm(
-        ctx.original[-1, :3] - ctx.original[0, :3]
-    )
+    if len(ctx.adapted) == len(ctx.original):  # same waypoints: compare them one by one
+        before, after = ctx.original[:, :3], ctx.adapted[:, :3]
+    else:
+        s = np.linspace(0.0, 1.0, 200)
+        before, after = _at_progress(ctx.original, s)[:, :3], _at_progress(ctx.adapted, s)[:, :3]
+    across = np.cross(np.gradient(before, axis=0), ctx.axes.vector("up"))
+    across /= np.maximum(np.linalg.norm(across, axis=1, keepdims=True), 1e-12)
+    lateral = np.sum((after - before) * across, axis=1)
+    largest = float(np.abs(lateral).max())
+    significant = np.abs(lateral) > max(0.25 * largest, 0.002 * ctx.size)
     signs = np.sign(lateral[significant])
     swings = int(np.sum(signs[1:] != signs[:-1]))
-    return swings >= int(p.get("swings", 4)), f"{swings} sideways swings"
+    return swings >= int(p.get("swings", 4)), f"{swings} sideways swings (largest offset {largest:.3g})"
 
 
 @check("changed")

@@ -243,6 +243,23 @@ def evaluate(case: BenchCase, loaded: Case, record: dict[str, Any], axes: Axes) 
     }
 
 
+def rescore(cases: list[BenchCase], config: BenchConfig) -> int:
+    """Judge the stored results again with the current expectations and checks; returns how many."""
+    count = 0
+    for case in cases:
+        path = result_path(config, case)
+        if not path.is_file():
+            continue
+        record = json.loads(path.read_text())
+        loaded = load_case(case.path)
+        axes = Axes.from_positive_x(AXIS_CONVENTIONS[record.get("axes", config.axes)].positive_x)
+        record["evaluation"] = evaluate(case, loaded, record, axes)
+        record["metrics"] = shape_metrics(loaded, record)
+        write_json_atomic(path, record)
+        count += 1
+    return count
+
+
 def shape_metrics(case: Case, record: dict[str, Any]) -> dict[str, float | None]:
     """Fréchet and DTW distance to the original, and roughness before and after."""
     if record.get("modified_trajectory") is None:

@@ -314,6 +314,11 @@ def bench(
     config = BenchConfig(
         out_dir or Path("bench-out") / mode, mode, settings.axes, settings.repair_attempts, jobs, force
     )
+    if rescore:
+        click.echo(f"judged {rescore_results(found, config)} stored result(s) again")
+        stored = [result_path(config, case) for case in found]
+        _report(config, [json.loads(path.read_text()) for path in stored if path.is_file()])
+        return
     chosen = _make_backend(settings, options)
     todo = sum(1 for case in found if force or not result_path(config, case).is_file())
     click.echo(

@@ -14,6 +14,7 @@ from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import backend_class, get_backend, registered_backends
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
+from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
 from trajadapt.console import CaseProgress, Progress, show_plan, show_result
 from trajadapt.constraints import Constraints

@@ -107,8 +107,15 @@ def test_rescore_judges_stored_results_again(tmp_path: Path, ovita_dir: Path) ->
     answers = tmp_path / "answers.json"
     answers.write_text(json.dumps([SHIFT_LEFT] * 3))
     runner = CliRunner()
-    assert runner.invoke(cli, ["bench", str(folder), "-b", "scripted", "-o", "answers", str(answers), "--out", str(out)]).exit_code == 0
-    (folder / "expectations.toml").write_text(EXPECTATIONS.replace('direction = "left"', 'direction = "right"'))
+    assert (
+        runner.invoke(
+            cli, ["bench", str(folder), "-b", "scripted", "-o", "answers", str(answers), "--out", str(out)]
+        ).exit_code
+        == 0
+    )
+    (folder / "expectations.toml").write_text(
+        EXPECTATIONS.replace('direction = "left"', 'direction = "right"')
+    )
     result = runner.invoke(cli, ["bench", str(folder), "--rescore", "--out", str(out)])
     assert result.exit_code == 0, result.output
     assert "judged 3 stored result(s) again" in result.output and "passed 0 of 2" in result.output

@@ -8,7 +8,7 @@ from trajadapt.sandbox.api import CONTRACT
 
 
 def test_sections_in_paper_order(simple_case: Case) -> None:
-    system, user = first_messages(simple_case, AXIS_CONVENTIONS["paper"])
+    system, user = first_messages(simple_case, AXIS_CONVENTIONS["paper"], mode="paper")
     text = system.content
     order = [
         "FUNCTIONS AVAILABLE",
@@ -21,6 +21,20 @@ def test_sections_in_paper_order(simple_case: Case) -> None:
     assert positions == sorted(positions)
     assert "ENVIRONMENT DESCRIPTION" in user.content and "INSTRUCTION: go left" in user.content
     assert "modified_trajectory" in text and "Instruction: Go left" in text
+
+
+def test_skills_prompt_lists_the_library(simple_case: Case) -> None:
+    from trajadapt.skills import SKILLS
+
+    text = first_messages(simple_case, AXIS_CONVENTIONS["paper"])[0].content
+    positions = [
+        text.index(s)
+        for s in ("FUNCTIONS AVAILABLE", "COORDINATE SYSTEM", "RULES", "OUTPUT FORMAT", "EXAMPLES")
+    ]
+    assert positions == sorted(positions)
+    for function in SKILLS:
+        assert f"- {function.__name__}(" in text
+    assert "shift(" not in first_messages(simple_case, AXIS_CONVENTIONS["paper"], mode="paper")[0].content
 
 
 def test_axes_are_stated_and_the_papers_typo_is_fixed() -> None:

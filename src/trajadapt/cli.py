@@ -119,6 +119,10 @@ option_option = click.option(
     help="Prompt mode: skills (default; the skill library) or paper (the paper's prompt).",
 )
 @click.option(
+    "--temperature", type=float, default=None, help="Sampling temperature (default 0: deterministic)."
+)
+@click.option("--seed", type=int, default=None, help="Sampling seed (default 0).")
+@click.option(
     "--project",
     "project_onto",
     is_flag=True,

@@ -56,7 +56,7 @@ def test_messages_and_sampling_are_passed_through() -> None:
     assert call["temperature"] == 0.0 and call["seed"] == 7 and call["stream"] is True
     assert "response_format" not in call
     assert completion.usage.completion_tokens == 2 and completion.usage.prompt_tokens == 100
-    assert set(completion.details) == {"prefill_s", "generation_s"}
+    assert set(completion.details) == {"prefill_s", "generation_s", "restored_prompt_tokens"}
 
 
 def test_json_schema_mode() -> None:

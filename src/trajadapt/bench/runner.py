@@ -71,28 +71,30 @@ def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> 
     cases: list[BenchCase] = []
     for path in paths:
         if path.is_file():
-            cases.append(_single_case(path, expectations_file))
-            continue
-        if path.is_dir():
-            folder = path
+            files = [path]
+        elif path.is_dir():
             files = sorted(p for p in path.rglob("*.json") if not p.name.endswith(".result.json"))
         else:
             raise InputError(f"{path}: no such case file or folder")
-        expectations = find_expectations(folder, expectations_file)
-        for file in files:
-            key = str(file.relative_to(folder).with_suffix(""))
-            cases.append(BenchCase(key, file, expectations))
+        cases.extend(
+            _located_case(file, path if path.is_dir() else path.parent, expectations_file) for file in files
+        )
     return cases
 
 
-def _single_case(path: Path, expectations_file: Path | None) -> BenchCase:
-    """A case file given alone: its key is relative to the nearest folder whose expectations name it."""
-    for folder in path.parents:
+def _located_case(path: Path, given: Path, expectations_file: Path | None) -> BenchCase:
+    """Key a case relative to the nearest folder (the given one or above) whose expectations name it.
+
+    So ``ovita-dev/latte_subset`` alone still finds ``ovita-dev``'s expectations.
+    """
+    for folder in (given, *given.parents):
         expectations = find_expectations(folder, expectations_file)
         key = str(path.relative_to(folder).with_suffix(""))
         if expectations is not None and key in expectations.cases:
             return BenchCase(key, path, expectations)
-    return BenchCase(path.stem, path, None)
+    return BenchCase(
+        str(path.relative_to(given).with_suffix("")), path, find_expectations(given, expectations_file)
+    )
 
 
 def result_path(config: BenchConfig, case: BenchCase) -> Path:

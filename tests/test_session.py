@@ -190,3 +190,20 @@ def test_discarded_skill_results_are_kept(simple_case: Case, sandbox: Sandbox) -
     result = session.approve()
     assert result.trajectory is not None and np.isclose(result.trajectory.positions[-1, 0], 0.3)
     assert any("result of shift() was not kept" in note.message for note in result.notes)
+
+
+def test_repair_quotes_the_signature_of_the_misused_skill(simple_case: Case, sandbox: Sandbox) -> None:
+    bad = "t = get_trajectory()\nt = shift(t, 'away', 0.2)\nmodified_trajectory = t\n"
+    session, backend = make_session(simple_case, sandbox, answer("1) a", bad), answer("1) b", SHIFT_LEFT))
+    session.draft()
+    assert session.approve().ok
+    repair = backend.requests[-1].messages[-1].content
+    assert "relative to an object: use move_away(t, detect_objects('name'), amount)" in repair
+    assert "How to call it:\n- shift(trajectory, direction, amount=None):" in repair
+
+
+def test_invented_detect_names_work_in_skills_mode(simple_case: Case, sandbox: Sandbox) -> None:
+    code = "t = get_trajectory()\nbox = find_object('box')\nmodified_trajectory = move_closer(t, box)\n"
+    session, _ = make_session(simple_case, sandbox, answer("1) a", code))
+    session.draft()
+    assert session.approve().ok

@@ -6,6 +6,7 @@ own beyond the backend, the sandbox and the log store it is given.
 
 from __future__ import annotations
 
+import re
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -20,6 +21,7 @@ from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
+from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 
@@ -122,6 +124,19 @@ class AdaptationResult:
 ProgressCallback = Callable[[str], None]
 
 
+def skill_hints(code: str, problem: str) -> str:
+    """The prompt lines of the skills used on the failing line, so that the repair gets the call right."""
+    match = re.search(r"\(line (\d+)\)", problem)
+    lines = code.splitlines()
+    if match is None or not 0 < int(match.group(1)) <= len(lines):
+        return ""
+    failing = lines[int(match.group(1)) - 1]
+    used = [f for f in SKILLS if re.search(rf"\b{f.__name__}\s*\(", failing)]
+    if not used:
+        return ""
+    return "\nHow to call it:\n" + "\n".join(f"- {signature_line(f)}: {summary(f)}" for f in used)
+
+
 class AdaptationSession:
     """The conversation about one case: plans, feedback, repairs and the final result."""
 
@@ -193,8 +208,9 @@ class AdaptationSession:
             if isinstance(outcome, Trajectory) or attempts > self.settings.repair_attempts:
                 return self._result(plan, outcome, attempts)
             self.on_progress(f"the code failed, asking for a repair: {outcome}")
+            problem = outcome + skill_hints(plan.code, outcome) if self.settings.mode == "skills" else outcome
             self.messages.append(ChatMessage("user", render(
-                "repair", problem=outcome, instruction=self.case.instruction
+                "repair", problem=problem, instruction=self.case.instruction
             )))  # fmt: skip
             try:
                 plan = self._ask("repair", outcome)

@@ -257,3 +257,18 @@ def test_every_skill_is_documented_and_listed() -> None:
     for function in SKILLS:
         assert function.__doc__ and function.__name__ + "(" in text
     assert "axes" not in text
+
+
+@pytest.mark.parametrize(
+    ("word", "advice"),
+    [
+        ("away", "use move_away"),
+        ("closer", "move_closer"),
+        ("goal", "use shift_goal"),
+        ("middle", "part='middle'"),
+        ("x", "use one of"),
+    ],
+)
+def test_wrong_direction_words_say_what_to_use(word: str, advice: str) -> None:
+    with pytest.raises(ValueError, match=advice.replace("(", "\\(")):
+        shape.shift(curve(), word, 0.1)

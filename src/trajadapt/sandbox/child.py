@@ -36,6 +36,8 @@ RESULT_FD = 3
 NOBODY_ID = 65534
 MAX_RESULT_BYTES = 32 * 1024 * 1024
 MAX_WAYPOINTS = 100_000
+# Names a small model invents for detect_objects (seen in the benchmark); in skills mode they work too.
+DETECT_ALIASES = ("find_object", "find_objects", "detect_object", "get_object", "get_object_position")
 
 
 def main() -> None:
@@ -191,6 +193,7 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
     notes: list[str] = []
     if job.get("skills"):
         api.update(bind_skills(Axes.from_positive_x(job.get("positive_x", "left"))))
+        api.update(dict.fromkeys(DETECT_ALIASES, api["detect_objects"]))
         notes += assign_discarded_results(tree, SKILL_NAMES)
     namespace = _namespace(api, modules, output)
     try:

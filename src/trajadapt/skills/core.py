@@ -52,14 +52,33 @@ class Axes:
         """
         word = DIRECTION_SYNONYMS.get(str(direction).strip().lower())
         if word is None:
-            known = ", ".join(sorted(set(DIRECTION_SYNONYMS.values())))
-            raise ValueError(f"unknown direction {direction!r}; use one of: {known}")
+            raise ValueError(_direction_advice(direction))
         sign = -1.0 if word in ("right", "back", "down") else 1.0
         base = {"left": self.left, "right": self.left, "front": self.front, "back": self.front}
         return sign * np.asarray(base.get(word, self.up), dtype=np.float64)
 
 
 PAPER_AXES = Axes()
+
+RELATIVE_WORDS = ("away", "further", "farther", "closer", "towards", "toward", "near", "nearer")
+
+
+def _direction_advice(direction: Any) -> str:
+    """Why a direction word was refused, and which function to use instead."""
+    word = str(direction).strip().lower()
+    known = ", ".join(sorted(set(DIRECTION_SYNONYMS.values())))
+    if word in RELATIVE_WORDS:
+        return (
+            f"{direction!r} is not a direction but relative to an object: use "
+            "move_away(t, detect_objects('name'), amount) or move_closer(t, detect_objects('name'), amount)"
+        )
+    if word in PART_WORDS or word in ("goal", "start"):
+        return (
+            f"{direction!r} names a part of the path, not a direction: use shift_goal(t, direction, amount), "
+            f"shift_start(t, direction, amount) or shift_part(t, direction, amount, part='{word}'); "
+            f"directions are: {known}"
+        )
+    return f"unknown direction {direction!r}; use one of: {known}"
 
 
 def as_trajectory(trajectory: Any) -> Array:

@@ -16,7 +16,7 @@ from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
-from trajadapt.console import CaseProgress, Progress, show_plan, show_result
+from trajadapt.console import CaseProgress, PrepareBar, Progress, show_plan, show_result
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
@@ -86,6 +86,12 @@ option_option = click.option(
 )
 @backend_option
 @option_option
+@click.option(
+    "--model-path",
+    type=click.Path(path_type=Path, dir_okay=False),
+    default=None,
+    help="A GGUF model file of your own for the local backend (instead of the embedded one).",
+)
 @click.option("--yes", "-y", is_flag=True, help="Approve the first plan without asking.")
 @click.option(
     "--out",
@@ -138,6 +144,7 @@ def adapt(
     scene_file: Path | None,
     backend: str | None,
     options: tuple[tuple[str, str], ...],
+    model_path: Path | None,
     yes: bool,
     out: Path | None,
     plot_file: Path | None,
@@ -158,7 +165,7 @@ def adapt(
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed}
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
-    chosen = _make_backend(settings, options)
+    chosen = _make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or out.with_name(out.name.removesuffix(".json").removesuffix(".result") + ".png")
     limits = Constraints(min_clearance=clearance, max_speed=max_speed)
@@ -191,10 +198,16 @@ def _load_case(
     return case
 
 
-def _make_backend(settings: Settings, pairs: tuple[tuple[str, str], ...]) -> Backend:
+def _make_backend(
+    settings: Settings, pairs: tuple[tuple[str, str], ...], model_path: Path | None = None
+) -> Backend:
     options = dict(settings.backend_options) if settings.backend_options else {}
     options.update(_backend_options(pairs))
-    return get_backend(settings.backend, options)
+    if model_path is not None:
+        options["model_path"] = str(model_path)
+    backend = get_backend(settings.backend, options)
+    backend.prepare(PrepareBar())
+    return backend
 
 
 def _run_session(

@@ -126,3 +126,27 @@ class CaseProgress:
             f"[{self.done}/{self.total}] {name}: {outcome} (elapsed {elapsed:.0f} s, ETA {remaining:.0f} s)",
             file=self.stream,
         )
+
+
+class PrepareBar:
+    """A progress bar for a backend's one-time preparation (e.g. assembling a 1.1 GB model)."""
+
+    def __init__(self, stream: TextIO | None = None) -> None:
+        self.stream = stream or sys.stderr
+        self._what = ""
+        self._shown = -1
+
+    def __call__(self, what: str, done: int, total: int) -> None:
+        """Show progress of ``what``: a bar on a terminal, a line per 10% otherwise."""
+        percent = int(100 * done / total) if total else 100
+        if what != self._what:
+            self._what, self._shown = what, -1
+        if self.stream.isatty():
+            filled = percent // 4
+            self.stream.write(f"\r{what}: [{'#' * filled}{'.' * (25 - filled)}] {percent:3d}%")
+            if done >= total:
+                self.stream.write("\n")
+            self.stream.flush()
+        elif percent // 10 != self._shown // 10 or done >= total:
+            click.echo(f"{what}: {percent}%", file=self.stream)
+        self._shown = percent

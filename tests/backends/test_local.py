@@ -118,3 +118,41 @@ def test_real_adaptation_parses_and_executes(simple_case: Case, real_model: Path
     assert result.ok, result.error
     assert result.trajectory is not None and len(result.trajectory) >= 2
     assert json.dumps(result.to_dict())
+
+
+def test_prepare_assembles_with_progress_then_loads(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import trajadapt.backends.local as local
+
+    model = tmp_path / "m.gguf"
+    model.write_bytes(b"GGUF")
+    calls: list[str] = []
+
+    def fake_ensure(cache_dir: Path, progress: Any = None) -> Path:
+        if progress is not None:
+            progress(50, 100)
+            progress(100, 100)
+        calls.append("ensure")
+        return model
+
+    monkeypatch.setattr(local, "ensure_model", fake_ensure)
+    monkeypatch.setattr(local, "load_llama", lambda *args: calls.append("load"))
+    seen: list[tuple[str, int, int]] = []
+    LocalBackend(LocalOptions(cache_dir=tmp_path)).prepare(
+        lambda what, done, total: seen.append((what, done, total))
+    )
+    assert calls == ["ensure", "load"]
+    assert seen[:2] == [("assembling the model", 50, 100), ("assembling the model", 100, 100)]
+    assert seen[-1] == ("loading the model", 1, 1)
+
+
+def test_prepare_bar_prints_lines_off_a_terminal(capsys: pytest.CaptureFixture[str]) -> None:
+    import sys
+
+    from trajadapt.console import PrepareBar
+
+    bar = PrepareBar(sys.stderr)
+    for done in range(0, 101, 5):
+        bar("assembling the model", done, 100)
+    lines = capsys.readouterr().err.splitlines()
+    assert lines[0] == "assembling the model: 0%" and lines[-1] == "assembling the model: 100%"
+    assert len(lines) == 11

@@ -6,7 +6,7 @@ import dataclasses
 import types
 import typing
 from abc import ABC, abstractmethod
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, ClassVar, Literal
@@ -14,6 +14,7 @@ from typing import Any, ClassVar, Literal
 from trajadapt.errors import BackendOptionError
 
 Role = Literal["system", "user", "assistant"]
+PrepareProgress = Callable[[str, int, int], None]  # (what, done, total)
 
 
 @dataclass(frozen=True)
@@ -88,6 +89,9 @@ class Backend(ABC):
     def describe(self) -> str:
         """One line for ``trajadapt backends``: where answers come from."""
         return f"{self.name}: model {self.model}"
+
+    def prepare(self, progress: PrepareProgress | None = None) -> None:  # noqa: B027 - optional hook
+        """Do slow one-time work (download, assemble, load) now, reporting progress, not on first use."""
 
     def close(self) -> None:  # noqa: B027 - optional hook, most backends hold nothing
         """Release resources held by the backend."""

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from trajadapt.backends.base import Backend, ChatRequest, Completion, Usage
+from trajadapt.backends.base import Backend, ChatRequest, Completion, PrepareProgress, Usage
 from trajadapt.backends.prompt_state import PromptStateCache
 from trajadapt.errors import BackendUnavailable, DependencyNotInstalled, EmptyCompletion
 from trajadapt.model_file import MODEL_FILENAME, ensure_model
@@ -105,6 +105,21 @@ class LocalBackend(Backend):
                 raise BackendUnavailable(f"model_path {path} does not exist")
             return path
         return ensure_model(self._cache_dir())
+
+    def prepare(self, progress: PrepareProgress | None = None) -> None:
+        """Assemble and verify the embedded model (first use only), then load it."""
+        if self._llama is not None:
+            return
+        if self.options.model_path is None:
+            report = (lambda done, total: progress("assembling the model", done, total)) if progress else None
+            path = ensure_model(self._cache_dir(), report)
+        else:
+            path = self.model_path()
+        if progress is not None:
+            progress("loading the model", 0, 1)
+        load_llama(path, self.options.n_threads, self.options.n_ctx)
+        if progress is not None:
+            progress("loading the model", 1, 1)
 
     def _cache_dir(self) -> Path:
         return Path(self.options.cache_dir or default_home() / "models")

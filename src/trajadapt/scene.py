@@ -43,16 +43,17 @@ class Scene:
 
     def find(self, name: str) -> SceneObject | None:
         """Return the object called ``name`` (case- and surrounding-space-insensitive), or None."""
-        key = _name_key(name)
-        return next((obj for obj in self.objects if _name_key(obj.name) == key), None)
+        key = name_key(name)
+        return next((obj for obj in self.objects if name_key(obj.name) == key), None)
 
     def names(self) -> list[str]:
         """The object names, in file order."""
         return [obj.name for obj in self.objects]
 
 
-def _name_key(name: str) -> str:
-    return " ".join(name.split()).casefold()
+def name_key(name: str) -> str:
+    """How object names are compared: case-insensitive, surrounding and repeated spaces ignored."""
+    return " ".join(str(name).split()).casefold()
 
 
 def parse_objects(raw: Any, where: str) -> tuple[SceneObject, ...]:
@@ -69,7 +70,7 @@ def parse_objects(raw: Any, where: str) -> tuple[SceneObject, ...]:
     objects = tuple(_parse_object(item, f"{where}[{index}]") for index, item in enumerate(raw))
     seen: dict[str, str] = {}
     for obj in objects:
-        key = _name_key(obj.name)
+        key = name_key(obj.name)
         if key in seen:
             raise InputError(
                 f"{where}: object names must be unique (case-insensitive); "

@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from trajadapt.scene import name_key
+
 RESULT_VARIABLE = "modified_trajectory"
 
 
@@ -34,10 +36,6 @@ CONTRACT = (
         "returns the [x, y, z] position of the named object (case-insensitive) if it is present, else None.",
     ),
 )
-
-
-def _name_key(name: str) -> str:
-    return " ".join(str(name).split()).casefold()
 
 
 @dataclass
@@ -64,14 +62,14 @@ def build_api(
 ) -> tuple[dict[str, Callable[..., Any]], ApiCalls]:
     """Return ``get_trajectory`` and ``detect_objects`` bound to one job's data, and their call log."""
     original = np.asarray(trajectory_rows, dtype=np.float64)
-    positions = {_name_key(name): [float(v) for v in xyz] for name, xyz in objects.items()}
+    positions = {name_key(name): [float(v) for v in xyz] for name, xyz in objects.items()}
     calls = ApiCalls(known_objects=list(objects), missing_objects=[])
 
     def get_trajectory() -> np.ndarray:
         return original.copy()
 
     def detect_objects(object_name: str) -> list[float] | None:
-        found = positions.get(_name_key(object_name))
+        found = positions.get(name_key(object_name))
         if found is None:
             calls.missing_objects.append(str(object_name))
         return list(found) if found is not None else None

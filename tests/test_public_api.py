@@ -1,0 +1,19 @@
+"""The public API resolves, and importing the package stays light (no LLM client at import)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import trajadapt
+
+
+def test_every_export_resolves() -> None:
+    for name in trajadapt.__all__:
+        assert getattr(trajadapt, name) is not None
+
+
+def test_import_is_light() -> None:
+    code = "import sys, trajadapt, trajadapt.sandbox.child; print('openai' in sys.modules, 'llama_cpp' in sys.modules)"
+    output = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert output.split() == ["False", "False"]

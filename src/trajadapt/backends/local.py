@@ -6,6 +6,7 @@ reuse the cached state of the prompt's fixed prefix from one request to the next
 
 from __future__ import annotations
 
+import atexit
 import threading
 import time
 from dataclasses import dataclass
@@ -49,6 +50,15 @@ ANSWER_SCHEMA = {
 
 _models: dict[tuple[str, int, int], Any] = {}
 _models_lock = threading.Lock()
+
+
+@atexit.register
+def _close_models() -> None:
+    """Free loaded models before interpreter teardown (llama-cpp-python's __del__ fails late in it)."""
+    with _models_lock:
+        for llama in _models.values():
+            llama.close()
+        _models.clear()
 
 
 def load_llama(model_path: Path, n_threads: int, n_ctx: int) -> Any:

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from trajadapt.errors import InvalidTrajectory
+from trajadapt.skills.core import extent
 from trajadapt.trajectory import Trajectory
 
 JUMP_FACTOR = 3.0
@@ -55,7 +56,7 @@ class ReviewNote:
 def review_notes(original: Trajectory, adapted: Trajectory) -> list[ReviewNote]:
     """Start moved, waypoints added or removed, jumps far larger than the original's largest step."""
     notes = []
-    scale = _scale(original)
+    scale = extent(original.array)
     start_shift = float(np.linalg.norm(adapted.positions[0] - original.positions[0]))
     if start_shift > 1e-6 * scale:
         notes.append(ReviewNote("start-moved", f"the start moved by {start_shift:.3g}"))
@@ -79,8 +80,3 @@ def review_notes(original: Trajectory, adapted: Trajectory) -> list[ReviewNote]:
             )
         )
     return notes
-
-
-def _scale(trajectory: Trajectory) -> float:
-    extent = np.ptp(trajectory.positions, axis=0)
-    return float(max(np.max(extent), 1e-9))

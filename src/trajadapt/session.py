@@ -299,7 +299,11 @@ class AdaptationSession:
             return "ConstraintViolation: " + "; ".join(v.message for v in violations)
         return trajectory
 
-    def _result(self, plan: Plan, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
+    def failure(self, error: str) -> AdaptationResult:
+        """The result of a session that ended without running code (e.g. the LLM gave no readable plan)."""
+        return self._result(self.plan, error, 0)
+
+    def _result(self, plan: Plan | None, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
         ok = isinstance(outcome, Trajectory)
         trajectory = outcome if isinstance(outcome, Trajectory) else None
         return AdaptationResult(

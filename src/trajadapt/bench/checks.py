@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.skills.core import Array, Axes, progress
+from trajadapt.skills.core import Array, Axes, extent, progress
 
 REAL_CHANGE = 0.02  # of the original's size: smaller moves do not count as a change
 NEAR_FRACTION = 0.25  # the share of waypoints nearest an object that count as "near" it
@@ -40,7 +40,7 @@ class CheckContext:
     @property
     def size(self) -> float:
         """The original's largest bounding-box side."""
-        return float(max(np.ptp(self.original[:, :3], axis=0).max(), 1e-9))
+        return extent(self.original)
 
     def point(self, params: dict[str, Any]) -> Array:
         """The position named by ``object`` (or a midpoint of ``objects``, or an explicit ``point``)."""

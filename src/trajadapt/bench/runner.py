@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import queue
-import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
@@ -158,12 +157,11 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         axes=AXIS_CONVENTIONS[config.axes], mode=config.mode, repair_attempts=config.repair_attempts
     )
     session = AdaptationSession(loaded, backend, sandbox, settings)
-    started = time.perf_counter()
     try:
         session.draft()
         record = session.approve().to_dict()
     except TrajadaptError as exc:
-        record = _error_record(loaded, session, backend, exc, time.perf_counter() - started)
+        record = session.failure(f"{type(exc).__name__}: {exc}").to_dict()
     record["mode"] = config.mode
     record["axes"] = config.axes
     record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
@@ -172,31 +170,6 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
     )
     record["metrics"] = shape_metrics(loaded, record)
     return record
-
-
-def _error_record(
-    case: Case, session: AdaptationSession, backend: Backend, exc: Exception, elapsed: float
-) -> dict[str, Any]:
-    plan = session.plan
-    return {
-        "case": case.name,
-        "case_source": str(case.source),
-        "instruction": case.instruction,
-        "high_level_plan": list(plan.steps) if plan else [],
-        "code": plan.code if plan else "",
-        "modified_trajectory": None,
-        "original_trajectory": case.trajectory.to_rows(),
-        "objects": [obj.to_dict() for obj in case.scene.objects],
-        "status": "error",
-        "error": f"{type(exc).__name__}: {exc}",
-        "attempts": 0,
-        "backend": backend.name,
-        "model": backend.model,
-        "timings_s": {"llm": None, "exec": None, "total": round(elapsed, 4)},
-        "tokens": {},
-        "review_notes": [],
-        "stdout": "",
-    }
 
 
 def evaluate(case: BenchCase, loaded: Case, record: dict[str, Any], axes: Axes) -> dict[str, Any]:

@@ -116,6 +116,17 @@ def test_detect_objects_is_case_insensitive_and_none_when_absent(sandbox: Sandbo
     assert result.stdout.strip() == "[1.0, 2.0, 3.0] None"
 
 
+def test_detect_objects_knows_the_start_and_goal_unless_the_scene_names_them(sandbox: Sandbox) -> None:
+    code = "print(detect_objects('goal position'), detect_objects('Start'))\nmodified_trajectory = get_trajectory()"
+    rows = line_trajectory(5)
+    result = sandbox.run(code, rows, Scene())
+    goal, start = rows.positions[-1].tolist(), rows.positions[0].tolist()
+    assert result.stdout.strip() == f"{goal} {start}"
+    named = "print(detect_objects('goal'))\nmodified_trajectory = get_trajectory()"
+    shadowed = sandbox.run(named, rows, Scene((SceneObject("goal", 9.0, 9.0, 9.0),)))
+    assert shadowed.stdout.strip() == "[9.0, 9.0, 9.0]"
+
+
 def test_error_names_the_line_and_the_missing_object(sandbox: Sandbox) -> None:
     code = (
         "t = get_trajectory()\nsofa = detect_objects('sofa')\nd = t[:, :3] - sofa[0]\nmodified_trajectory = t"

@@ -118,16 +118,16 @@ def test_move_closer_and_away() -> None:
     assert np.allclose(away[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, away)
 
 
-def test_keep_distance_from_one_and_several_points() -> None:
+def test_keep_at_least_from_one_and_several_points() -> None:
     t = curve()
     near = [[0.3, 1.0, 1.0], [0.0, 0.4, 1.0]]
-    out = objects.keep_distance(t, near, 0.25)
+    out = objects.keep_at_least(t, near, 0.25)
     for point in near:
         assert distances(out, point).min() >= 0.25 - 1e-9
     assert np.allclose(out[-1], t[-1])
     steps = np.linalg.norm(np.diff(out[:, :3], axis=0), axis=1)
     assert steps.max() < 4 * np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max()
-    single = objects.keep_distance(t, [0.3, 1.0, 1.0], 0.25)
+    single = objects.keep_at_least(t, [0.3, 1.0, 1.0], 0.25)
     assert distances(single, [0.3, 1.0, 1.0]).min() >= 0.25 - 1e-9
 
 
@@ -194,6 +194,7 @@ def test_stop_wait_extend_segment() -> None:
     assert np.allclose(longer[-1, :3], t[-1, :3] + 0.4 * heading)
     left = events.extend(t, 0.2, "left")
     assert np.isclose(left[-1, 0] - t[-1, 0], 0.2)
+    assert np.allclose(events.extend(t, 0.4, "goal"), longer)  # "towards the goal": the final heading
     segment = events.append_segment(t, [1, 1, 1], count=5)
     assert np.allclose(segment[-1, :3], [1, 1, 1]) and segment[-1, 3] == 0 and segment[N - 1, 3] > 0
 
@@ -257,6 +258,13 @@ def test_every_skill_is_documented_and_listed() -> None:
     for function in SKILLS:
         assert function.__doc__ and function.__name__ + "(" in text
     assert "axes" not in text
+    assert "resample(trajectory, count)" in text  # a required parameter is never hidden
+
+
+def test_a_zero_amount_means_the_default_amount() -> None:
+    t = curve()
+    assert np.allclose(shape.shift(t, "back", 0), shape.shift(t, "back"))
+    assert not np.allclose(shape.shift(t, "back", 0), t)
 
 
 @pytest.mark.parametrize(

@@ -57,6 +57,11 @@ class ApiCalls:
         )
 
 
+# Names that mean the trajectory's own ends when no scene object has them ("reach the goal position").
+START_NAMES = ("start", "start position", "starting position", "start point", "beginning")
+GOAL_NAMES = ("goal", "goal position", "goal point", "end", "end point", "destination", "target")
+
+
 def build_api(
     trajectory_rows: list[list[float]], objects: dict[str, list[float]]
 ) -> tuple[dict[str, Callable[..., Any]], ApiCalls]:
@@ -68,8 +73,13 @@ def build_api(
     def get_trajectory() -> np.ndarray:
         return original.copy()
 
+    landmarks = {key: original[0, :3] for key in START_NAMES} | {key: original[-1, :3] for key in GOAL_NAMES}
+
     def detect_objects(object_name: str) -> list[float] | None:
-        found = positions.get(name_key(object_name))
+        key = name_key(object_name)
+        found = positions.get(key)
+        if found is None and key in landmarks:
+            found = [float(v) for v in landmarks[key]]
         if found is None:
             calls.missing_objects.append(str(object_name))
         return list(found) if found is not None else None

@@ -23,7 +23,7 @@ SKILLS: tuple[Callable[..., Any], ...] = (
     shape.lift_middle,
     objects.move_closer,
     objects.move_away,
-    objects.keep_distance,
+    objects.keep_at_least,
     objects.pass_through,
     objects.reach,
     objects.midpoint,
@@ -67,8 +67,15 @@ def bind_skills(axes: Axes = PAPER_AXES) -> dict[str, Callable[..., Any]]:
 
 
 def signature_line(function: Callable[..., Any]) -> str:
-    """``name(args)``: what the prompt shows, without ``axes`` (bound by the sandbox) and tuning knobs."""
-    parameters = [p for p in inspect.signature(function).parameters.values() if p.name not in PROMPT_HIDDEN]
+    """``name(args)``: what the prompt shows, without ``axes`` (bound by the sandbox) and optional knobs.
+
+    A required parameter is always shown, whatever its name.
+    """
+    parameters = [
+        p
+        for p in inspect.signature(function).parameters.values()
+        if p.name not in PROMPT_HIDDEN or p.default is inspect.Parameter.empty
+    ]
     rendered = []
     for parameter in parameters:
         if parameter.default is inspect.Parameter.empty:

@@ -126,11 +126,13 @@ def extent(trajectory: Array) -> float:
 def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> float:
     """A distance from a number or a vague word ('a bit', 'a lot'), relative to the trajectory's size.
 
+    None and 0 both mean the default word's amount.
+
     Raises:
         ValueError: an unknown word, listing the known ones.
     """
-    if amount is None:
-        amount = default_word
+    if amount is None or (isinstance(amount, (int, float)) and not isinstance(amount, bool) and amount == 0):
+        amount = default_word  # a move "by 0" is never what was asked: read it as "by the default amount"
     if isinstance(amount, str):
         key = amount.strip().lower()
         if key not in AMOUNT_WORDS:

@@ -59,6 +59,10 @@ def wait(trajectory: Any, at: Any, steps: int) -> Array:
     return np.vstack([t[: k + 1], pause, t[k + 1 :]])
 
 
+# Direction words that mean "keep going the way the path ends" rather than a fixed axis.
+HEADING_WORDS = frozenset({"", "goal", "heading", "straight", "along", "same", "onward", "onwards"})
+
+
 def extend(
     trajectory: Any,
     distance: Any = None,
@@ -74,7 +78,8 @@ def extend(
     """
     t = as_trajectory(trajectory)
     length = resolve_amount(distance, t, default_word="large") if distance is not None else 0.2 * extent(t)
-    heading = axes.vector(direction) if direction else _final_heading(t)
+    along = direction is None or str(direction).strip().lower() in HEADING_WORDS
+    heading = _final_heading(t) if along else axes.vector(str(direction))
     return append_segment(t, t[-1, :3] + heading * length, count)
 
 

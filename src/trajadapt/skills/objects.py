@@ -76,7 +76,7 @@ def move_away(trajectory: Any, point: Any, amount: Any = None) -> Array:
     return t
 
 
-def keep_distance(trajectory: Any, points: Any, distance: float, iterations: int = 50) -> Array:
+def keep_at_least(trajectory: Any, points: Any, distance: float, iterations: int = 50) -> Array:
     """Keep every waypoint at least distance away from a point or a list of points.
 
     Make every waypoint at least distance away from each point (one point or a list of points),

@@ -16,6 +16,7 @@ from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
+from trajadapt.cli_robots import ROBOT_NAMES, plan, run_and_report, simulate
 from trajadapt.console import CaseProgress, PrepareBar, Progress, show_plan, show_result
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
@@ -137,6 +138,13 @@ option_option = click.option(
 @click.option("--clearance", type=float, default=None, help="Minimum distance to keep from every object.")
 @click.option("--max-speed", type=float, default=None, help="Highest allowed velocity.")
 @click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
+@click.option(
+    "--simulate",
+    "simulate_on",
+    type=click.Choice(ROBOT_NAMES),
+    default=None,
+    help="After approval, execute the result on a simulated robot (arm, drone or ground).",
+)
 def adapt(
     case_file: Path | None,
     instruction: str | None,
@@ -157,6 +165,7 @@ def adapt(
     clearance: float | None,
     max_speed: float | None,
     no_log: bool,
+    simulate_on: str | None,
 ) -> None:
     """Adapt the trajectory of CASE_FILE (OVITA case format) to its instruction.
 
@@ -173,6 +182,13 @@ def adapt(
     _save(result, out, plot_file, settings)
     if not result.ok:
         raise click.exceptions.Exit(1)
+    if simulate_on is not None:
+        stem = out.name.removesuffix(".json").removesuffix(".result")
+        image, report = (
+            out.with_name(f"{stem}.{simulate_on}.png"),
+            out.with_name(f"{stem}.{simulate_on}.sim.json"),
+        )
+        run_and_report(out, simulate_on, image, report, axes=settings.axes)
 
 
 def _load_case(
@@ -424,3 +440,7 @@ def logs(limit: int, session_id: str | None, as_json: bool) -> None:
         click.echo(f"  instruction: {record.instruction}")
         if record.plan:
             click.echo("  plan: " + record.plan.replace("\n", "\n        "))
+
+
+cli.add_command(simulate)
+cli.add_command(plan)

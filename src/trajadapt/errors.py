@@ -90,3 +90,11 @@ class SessionStateError(TrajadaptError):
 
 class DependencyNotInstalled(TrajadaptError):
     """An optional dependency is needed; the message names the extra to install."""
+
+
+class SimulationError(TrajadaptError):
+    """A trajectory could not be run on a simulated robot (unknown robot, no timing, too long)."""
+
+
+class PlanningError(TrajadaptError):
+    """No initial trajectory could be planned between the given start and goal."""

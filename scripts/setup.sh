@@ -14,7 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 python="${PYTHON:-python3}"
-extras="${EXTRAS:-local,qp,sim,plan,dev}"
+extras="${EXTRAS:-local,qp,sim,plan,web,dev}"
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/trajadapt"
 llama_version="0.3.36"
 
@@ -30,6 +30,10 @@ fi
 if ! command -v bwrap >/dev/null 2>&1 && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
     say "installing bubblewrap (the sandbox's outer layer)"
     (apt-get update -qq && apt-get install -y -qq bubblewrap) >/dev/null 2>&1 || say "bubblewrap not installed; the sandbox uses process isolation only"
+fi
+if ! command -v chromium >/dev/null 2>&1 && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1 && [[ ",$extras," == *",dev,"* ]]; then
+    say "installing chromium (the review page's browser tests drive it headless)"
+    (apt-get update -qq && apt-get install -y -qq chromium) >/dev/null 2>&1 || say "chromium not installed; the browser tests will fail"
 fi
 
 llama_flags() {

@@ -16,14 +16,16 @@ from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
+from trajadapt.cli_common import backend_option, backend_options, isolation_of, make_backend, option_option
 from trajadapt.cli_robots import ROBOT_NAMES, plan, run_and_report, simulate
-from trajadapt.console import CaseProgress, PrepareBar, Progress, show_plan, show_result
+from trajadapt.cli_serve import serve
+from trajadapt.console import CaseProgress, Progress, show_plan, show_result
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.results import write_json_atomic
-from trajadapt.sandbox.runner import Isolation, Sandbox
+from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
 from trajadapt.store import Store
@@ -53,19 +55,6 @@ def cli(debug: bool) -> None:
     as JSON and plotted against the original.
     """
     logging.basicConfig(level=logging.DEBUG if debug else logging.WARNING)
-
-
-def _backend_options(pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:
-    return {key: value for key, value in pairs}
-
-
-backend_option = click.option(
-    "--backend", "-b", default=None, help="Backend name (see 'trajadapt backends'); default: local."
-)
-option_option = click.option(
-    "--option", "-o", "options", type=(str, str), multiple=True, metavar="KEY VALUE",
-    help="Backend option, e.g. -o base_url http://127.0.0.1:11434/v1 -o model qwen2.5-coder.",
-)  # fmt: skip
 
 
 @cli.command()
@@ -174,7 +163,7 @@ def adapt(
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed}
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
-    chosen = _make_backend(settings, options, model_path)
+    chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or out.with_name(out.name.removesuffix(".json").removesuffix(".result") + ".png")
     limits = Constraints(min_clearance=clearance, max_speed=max_speed)
@@ -214,18 +203,6 @@ def _load_case(
     return case
 
 
-def _make_backend(
-    settings: Settings, pairs: tuple[tuple[str, str], ...], model_path: Path | None = None
-) -> Backend:
-    options = dict(settings.backend_options) if settings.backend_options else {}
-    options.update(_backend_options(pairs))
-    if model_path is not None:
-        options["model_path"] = str(model_path)
-    backend = get_backend(settings.backend, options)
-    backend.prepare(PrepareBar())
-    return backend
-
-
 def _run_session(
     case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints, project_onto: bool
 ) -> AdaptationResult:
@@ -240,7 +217,7 @@ def _run_session(
         project=project_onto,
     )
     try:
-        with Sandbox(isolation=_isolation(settings)) as sandbox, Progress() as progress:
+        with Sandbox(isolation=isolation_of(settings)) as sandbox, Progress() as progress:
             session = AdaptationSession(case, backend, sandbox, session_settings, store, progress.update)
             click.echo(f"Case {case.name}: {case.instruction}")
             show_plan(session.draft())
@@ -253,12 +230,6 @@ def _run_session(
             store.close()
     show_result(result)
     return result
-
-
-def _isolation(settings: Settings) -> Isolation:
-    if settings.isolation not in ("auto", "bwrap", "process"):
-        raise InputError(f"isolation must be auto, bwrap or process, not {settings.isolation!r}")
-    return settings.isolation  # type: ignore[return-value]
 
 
 def _review(session: AdaptationSession) -> bool:
@@ -353,7 +324,7 @@ def bench(
         stored = [result_path(config, case) for case in found]
         _report(config, [json.loads(path.read_text()) for path in stored if path.is_file()])
         return
-    chosen = _make_backend(settings, options)
+    chosen = make_backend(settings, options)
     todo = sum(1 for case in found if force or not result_path(config, case).is_file())
     click.echo(
         f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {mode} -> {config.out_dir}"
@@ -402,7 +373,7 @@ def backends(check: bool, backend: str | None, options: tuple[tuple[str, str], .
             continue
         click.echo(f"{marker} {name:10s} {doc}")
         if check:
-            click.echo("    " + _check_backend(name, _backend_options(options) if backend else {}))
+            click.echo("    " + _check_backend(name, backend_options(options) if backend else {}))
 
 
 def _check_backend(name: str, options: dict[str, str]) -> str:
@@ -444,3 +415,4 @@ def logs(limit: int, session_id: str | None, as_json: bool) -> None:
 
 cli.add_command(simulate)
 cli.add_command(plan)
+cli.add_command(serve)

@@ -164,6 +164,7 @@ class AdaptationSession:
         self._last_stdout = ""
         self._last_notes: tuple[str, ...] = ()
         self._started = time.perf_counter()
+        self._checkpoints: list[tuple[int, int]] = []  # (messages, turns) right after each plan
 
     @property
     def plan(self) -> Plan | None:
@@ -217,6 +218,30 @@ class AdaptationSession:
             except AnswerParseError as exc:
                 return self._result(plan, f"repair answer unreadable: {exc}", attempts)
 
+    @property
+    def versions(self) -> list[Plan]:
+        """Every plan of the conversation so far, oldest first (index = version)."""
+        return [self.turns[turns - 1].plan for _, turns in self._checkpoints if self.turns[turns - 1].plan]  # type: ignore[misc]
+
+    def preview(self) -> Trajectory | str:
+        """Run the current plan's code once, without repair: the proposed trajectory, or what went wrong."""
+        return self._execute(self._require_plan())
+
+    def rewind(self, version: int) -> Plan:
+        """Go back to plan ``version`` (undo): later plans and feedback are dropped from the conversation.
+
+        Raises:
+            SessionStateError: no such version.
+        """
+        if not 0 <= version < len(self._checkpoints):
+            raise SessionStateError(
+                f"there is no plan version {version}; versions are 0..{len(self._checkpoints) - 1}"
+            )
+        messages, turns = self._checkpoints[version]
+        del self.messages[messages:], self.turns[turns:], self._checkpoints[version + 1 :]
+        self._log("undo", self._require_plan().code, {"user_text": f"back to version {version}"}, None, {})
+        return self._require_plan()
+
     def _require_plan(self) -> Plan:
         plan = self.plan
         if plan is None:
@@ -240,6 +265,7 @@ class AdaptationSession:
                 kind, user_text = "format-retry", str(exc)
                 continue
             self._record(Turn(kind, user_text, plan, completion))
+            self._checkpoints.append((len(self.messages), len(self.turns)))
             return plan
         raise AssertionError("unreachable")
 
@@ -279,6 +305,7 @@ class AdaptationSession:
             "stdout": result.stdout,
             "layers": list(result.layers),
             "waypoints": len(outcome) if isinstance(outcome, Trajectory) else None,
+            "trajectory": outcome.to_rows() if isinstance(outcome, Trajectory) else None,
         }, None if isinstance(outcome, Trajectory) else outcome, {"exec": result.duration_s})  # fmt: skip
         self._last_stdout = result.stdout
         return outcome

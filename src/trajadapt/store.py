@@ -51,6 +51,7 @@ class ExchangeRecord:
     session_id: str
     created: float
     kind: str
+    user_text: str
     instruction: str
     backend: str
     model: str
@@ -135,6 +136,22 @@ class Store:
         rows = self._connection.execute(query, (*parameters, limit)).fetchall()
         return [_record(row) for row in reversed(rows)]
 
+    def recent_sessions(self, limit: int = 50) -> list[dict[str, Any]]:
+        """The latest sessions, newest first: id, created, case name, instruction, backend, model."""
+        rows = self._connection.execute(
+            "SELECT id, created, case_name, instruction, backend, model FROM sessions "
+            "ORDER BY created DESC LIMIT ?",
+            (limit,),
+        ).fetchall()
+        return [dict(row) for row in rows]
+
+    def session_case(self, session_id: str) -> Any:
+        """The case a session worked on (OVITA form), or None for an unknown id."""
+        row = self._connection.execute(
+            "SELECT case_json FROM sessions WHERE id = ?", (session_id,)
+        ).fetchone()
+        return None if row is None else json.loads(row[0])
+
     def request_of(self, exchange_id: int) -> Any:
         """The full request (messages) and answer of one exchange."""
         row = self._connection.execute(
@@ -149,6 +166,7 @@ def _record(row: sqlite3.Row) -> ExchangeRecord:
         session_id=row["session_id"],
         created=row["created"],
         kind=row["kind"],
+        user_text=row["user_text"] or "",
         instruction=row["instruction"] or "",
         backend=row["backend"] or "",
         model=row["model"] or "",

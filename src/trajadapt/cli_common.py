@@ -1,0 +1,51 @@
+"""Pieces several commands share: the backend options and building a prepared backend."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from trajadapt.backends.base import Backend
+from trajadapt.backends.registry import get_backend
+from trajadapt.console import PrepareBar
+from trajadapt.errors import InputError
+from trajadapt.sandbox.runner import Isolation
+from trajadapt.settings import Settings
+
+backend_option = click.option(
+    "--backend", "-b", default=None, help="Backend name (see 'trajadapt backends'); default: local."
+)
+option_option = click.option(
+    "--option", "-o", "options", type=(str, str), multiple=True, metavar="KEY VALUE",
+    help="Backend option, e.g. -o base_url http://127.0.0.1:11434/v1 -o model qwen2.5-coder.",
+)  # fmt: skip
+
+
+def backend_options(pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:
+    """``-o KEY VALUE`` pairs as a dict."""
+    return {key: value for key, value in pairs}
+
+
+def make_backend(
+    settings: Settings, pairs: tuple[tuple[str, str], ...], model_path: Path | None = None
+) -> Backend:
+    """The configured backend with the command line's options, prepared (model assembled/loaded)."""
+    options = dict(settings.backend_options) if settings.backend_options else {}
+    options.update(backend_options(pairs))
+    if model_path is not None:
+        options["model_path"] = str(model_path)
+    backend = get_backend(settings.backend, options)
+    backend.prepare(PrepareBar())
+    return backend
+
+
+def isolation_of(settings: Settings) -> Isolation:
+    """The sandbox isolation the settings ask for.
+
+    Raises:
+        InputError: an unknown isolation name.
+    """
+    if settings.isolation not in ("auto", "bwrap", "process"):
+        raise InputError(f"isolation must be auto, bwrap or process, not {settings.isolation!r}")
+    return settings.isolation  # type: ignore[return-value]

@@ -1,0 +1,114 @@
+"""``trajadapt serve``: the review page on a local web server."""
+
+from __future__ import annotations
+
+import ipaddress
+import os
+import secrets
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import click
+
+from trajadapt.cli_common import backend_option, isolation_of, make_backend, option_option
+from trajadapt.errors import DependencyNotInstalled, InputError
+from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import SessionSettings
+from trajadapt.settings import load_settings
+from trajadapt.store import Store
+
+if TYPE_CHECKING:
+    from fastapi import FastAPI
+
+TOKEN_ENV = "TRAJADAPT_TOKEN"
+
+
+@click.command()
+@click.option("--host", default="127.0.0.1", show_default=True, help="Address to bind (loopback by default).")
+@click.option("--port", default=8765, show_default=True, type=click.IntRange(1, 65535), help="Port.")
+@click.option("--cases", "cases_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              help="Folder of case files the page can pick from.")  # fmt: skip
+@click.option("--allow-remote", is_flag=True, help="Allow binding to a non-loopback address (needs a token).")
+@click.option("--token", default=None, help=f"Access token (default: ${TOKEN_ENV}, or a new random one).")
+@backend_option
+@option_option
+@click.option("--model-path", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="Use this GGUF file with the local backend.")  # fmt: skip
+@click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
+@click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+def serve(
+    host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None, backend: str | None,
+    options: tuple[tuple[str, str], ...], model_path: Path | None, mode: str | None, axes: str | None,
+) -> None:  # fmt: skip
+    """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
+
+    Sessions are logged to the same SQLite log as 'adapt', so a restarted server lists earlier ones.
+    Binds to 127.0.0.1; another address needs --allow-remote, and then every request needs the token.
+    """
+    token = _access_token(host, allow_remote, token)
+    app = _build_app(cases_dir, backend, options, model_path, mode, axes, token)
+    import uvicorn
+
+    query = f"/?token={token}" if token else "/"
+    click.echo(f"trajadapt review page: http://{host}:{port}{query}  (Ctrl-C to stop)")
+    uvicorn.run(app, host=host, port=port, log_level="warning")
+
+
+def _access_token(host: str, allow_remote: bool, token: str | None) -> str | None:
+    if _is_loopback(host):
+        return token or os.environ.get(TOKEN_ENV) or None
+    if not allow_remote:
+        raise InputError(
+            f"binding to {host} exposes the server beyond this machine; "
+            "add --allow-remote (a token is then required)"
+        )
+    return token or os.environ.get(TOKEN_ENV) or secrets.token_urlsafe(18)
+
+
+def _is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return False
+
+
+def _build_app(
+    cases_dir: Path | None,
+    backend: str | None,
+    options: tuple[tuple[str, str], ...],
+    model_path: Path | None,
+    mode: str | None,
+    axes: str | None,
+    token: str | None,
+) -> FastAPI:
+    try:
+        from trajadapt.web.app import create_app
+        from trajadapt.web.services import Services, pybullet_simulator
+    except ImportError as exc:
+        raise DependencyNotInstalled(
+            "the review page needs fastapi, uvicorn and plotly: pip install 'trajadapt[web]'"
+        ) from exc
+    if cases_dir is not None and not cases_dir.is_dir():
+        raise InputError(f"--cases {cases_dir}: not a folder")
+    settings = load_settings({"backend": backend, "mode": mode, "axes": axes})
+    convention = AXIS_CONVENTIONS[settings.axes]
+    session_settings = SessionSettings(
+        axes=convention,
+        mode=settings.mode,
+        repair_attempts=settings.repair_attempts,
+        temperature=settings.temperature,
+        seed=settings.seed,
+    )
+    services = Services(
+        backend=make_backend(settings, options, model_path),
+        sandbox=Sandbox(isolation=isolation_of(settings)),
+        store=Store(settings.log_path),
+        settings=session_settings,
+        work_dir=settings.home / "web",
+        cases_dir=cases_dir,
+        simulator=pybullet_simulator(convention.positive_x),
+    )
+    return create_app(services, token)

@@ -1,0 +1,309 @@
+"""The review page's HTTP API (FastAPI) over the same session API the CLI uses.
+
+Routes: the page and its static files (plotly.js comes from the installed plotly package: no CDN);
+``/api/cases`` (a folder of case files), ``/api/upload`` (a case file's text, checked), and
+``/api/sessions`` (start, state, feedback, undo, approve, cancel, result download, simulate). Errors are
+JSON ``{"error": "..."}`` in words; a stack trace never reaches the page.
+"""
+
+from __future__ import annotations
+
+import json
+import secrets
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from fastapi.responses import FileResponse, JSONResponse, Response
+from pydantic import BaseModel
+
+from trajadapt.case import Case, case_from_dict
+from trajadapt.errors import InputError, SessionStateError, TrajadaptError
+from trajadapt.web.history import stored_session
+from trajadapt.web.live import Jobs, LiveSession, add_version, result_file_name, work_folder
+from trajadapt.web.services import Services
+
+STATIC = Path(__file__).parent / "static"
+MAX_UPLOAD_BYTES = 8 * 1024 * 1024
+
+
+class StartBody(BaseModel):
+    """Start a session on a case with an instruction."""
+
+    case: dict[str, Any]
+    instruction: str
+    name: str = "case"
+
+
+class TextBody(BaseModel):
+    """Feedback text."""
+
+    text: str
+
+
+class UndoBody(BaseModel):
+    """The version to go back to."""
+
+    version: int
+
+
+class SimulateBody(BaseModel):
+    """The robot to run the result on."""
+
+    robot: str
+
+
+@dataclass
+class ServerState:
+    """Everything the routes share."""
+
+    services: Services
+    token: str | None = None
+    live: dict[str, LiveSession] = field(default_factory=dict)
+    jobs: Jobs = field(default_factory=Jobs)
+
+
+def create_app(services: Services, token: str | None = None) -> FastAPI:
+    """The review server's app; ``token`` (if set) must come with every API request."""
+    app = FastAPI(title="trajadapt review", docs_url=None, redoc_url=None)
+    state = ServerState(services, token)
+    _install_errors(app)
+    _install_token_check(app, token)
+    _page_routes(app)
+    _case_routes(app, state)
+    _session_routes(app, state)
+    _output_routes(app, state)
+    return app
+
+
+def _install_errors(app: FastAPI) -> None:
+    @app.exception_handler(TrajadaptError)
+    async def trajadapt_error(_: Request, exc: TrajadaptError) -> JSONResponse:
+        status = 409 if isinstance(exc, SessionStateError) else 400
+        return JSONResponse({"error": f"{exc}"}, status_code=status)
+
+    @app.exception_handler(RequestValidationError)
+    async def validation_error(_: Request, exc: RequestValidationError) -> JSONResponse:
+        problems = "; ".join(f"{'.'.join(str(p) for p in e['loc'][1:])}: {e['msg']}" for e in exc.errors())
+        return JSONResponse({"error": f"bad request: {problems}"}, status_code=422)
+
+    @app.exception_handler(Exception)
+    async def internal_error(_: Request, exc: Exception) -> JSONResponse:
+        return JSONResponse(
+            {"error": f"internal error ({type(exc).__name__}); see the server's log"}, status_code=500
+        )
+
+
+def _install_token_check(app: FastAPI, token: str | None) -> None:
+    if token is None:
+        return
+
+    @app.middleware("http")
+    async def check_token(request: Request, call_next: Any) -> Response:
+        given = request.headers.get("x-trajadapt-token") or request.query_params.get("token") or ""
+        if request.url.path.startswith("/api/") and not secrets.compare_digest(given, token):
+            return JSONResponse(
+                {"error": "missing or wrong token; open the URL the server printed"}, status_code=401
+            )
+        response: Response = await call_next(request)
+        return response
+
+
+def _page_routes(app: FastAPI) -> None:
+    @app.get("/", include_in_schema=False)
+    def page() -> FileResponse:
+        return FileResponse(STATIC / "index.html")
+
+    @app.get("/static/{name}", include_in_schema=False)
+    def static(name: str) -> FileResponse:
+        if name == "plotly.min.js":
+            return FileResponse(_plotly_js(), media_type="text/javascript")
+        path = STATIC / name
+        if name not in {p.name for p in STATIC.iterdir()}:
+            raise InputError(f"no static file {name!r}")
+        return FileResponse(path)
+
+
+def _plotly_js() -> Path:
+    import plotly
+
+    return Path(plotly.__file__).parent / "package_data" / "plotly.min.js"
+
+
+def _case_routes(app: FastAPI, state: ServerState) -> None:
+    @app.get("/api/cases")
+    def cases() -> dict[str, Any]:
+        return {"folder": str(state.services.cases_dir or ""), "cases": state.services.case_names()}
+
+    @app.get("/api/cases/{name:path}")
+    def case(name: str) -> dict[str, Any]:
+        loaded = state.services.load_named_case(name)
+        return {"name": loaded.name, **loaded.to_dict()}
+
+    @app.post("/api/upload")
+    async def upload(request: Request) -> dict[str, Any]:
+        body = await _read_limited(request)
+        try:
+            data = json.loads(body)
+        except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+            raise InputError(f"the file is not JSON ({exc}); upload a case file in the OVITA format") from exc
+        name = Path(request.query_params.get("name", "uploaded")).stem or "uploaded"
+        uploaded = case_from_dict(data, f"uploaded file {name!r}", name=name)
+        return {"name": uploaded.name, **uploaded.to_dict()}
+
+
+async def _read_limited(request: Request) -> bytes:
+    declared = request.headers.get("content-length")
+    if declared is not None and int(declared) > MAX_UPLOAD_BYTES:
+        raise InputError(_too_big(int(declared)))
+    chunks, size = [], 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > MAX_UPLOAD_BYTES:
+            raise InputError(_too_big(size))
+        chunks.append(chunk)
+    return b"".join(chunks)
+
+
+def _too_big(size: int) -> str:
+    return f"the file is {size / 1e6:.1f} MB or more; the limit is {MAX_UPLOAD_BYTES / 1e6:.0f} MB"
+
+
+def _session_routes(app: FastAPI, state: ServerState) -> None:
+    @app.get("/api/sessions")
+    def sessions() -> dict[str, Any]:
+        live = [{"id": s.id, "case_name": s.case.name, "instruction": s.case.instruction,
+                 "status": s.status, "live": True} for s in state.live.values()]  # fmt: skip
+        known = {s.session.session_id for s in state.live.values()}
+        stored = [dict(s, live=False) for s in state.services.stored_sessions() if s["id"] not in known]
+        return {"sessions": live + stored}
+
+    @app.post("/api/sessions")
+    def start(body: StartBody) -> dict[str, Any]:
+        case = case_from_dict(body.case, "the case", name=body.name).with_instruction(body.instruction)
+        if not case.instruction:
+            raise InputError("type an instruction first")
+        live = _new_live(state, case)
+        return live.to_dict()
+
+    @app.get("/api/sessions/{session_id}")
+    def session(session_id: str) -> dict[str, Any]:
+        live = state.live.get(session_id)
+        if live is not None:
+            return live.to_dict()
+        return stored_session(state.services.store, session_id)
+
+    @app.post("/api/sessions/{session_id}/feedback")
+    def feedback(session_id: str, body: TextBody) -> dict[str, Any]:
+        live = _find(state, session_id)
+        text = body.text.strip()
+        if not text:
+            raise InputError("the feedback is empty; say what should change in the plan")
+        before = len(live.session.versions) - 1
+
+        def work() -> None:
+            live.result = None
+            add_version(live, text, live.session.feedback(text))
+
+        state.jobs.start(live, "asking for a new plan", work, lambda: _drop_after(live, before))
+        return live.to_dict()
+
+    @app.post("/api/sessions/{session_id}/undo")
+    def undo(session_id: str, body: UndoBody) -> dict[str, Any]:
+        live = _find(state, session_id)
+        if live.status == "working":
+            raise SessionStateError("wait for the running request or cancel it first")
+        if not 0 <= body.version < len(live.versions):
+            raise InputError(f"there is no version {body.version}")
+        with live.lock:
+            live.session.rewind(live.versions[body.version].checkpoint)
+            del live.versions[body.version + 1 :]
+            live.current, live.result, live.simulation, live.status = body.version, None, None, "ready"
+        return live.to_dict()
+
+    @app.post("/api/sessions/{session_id}/approve")
+    def approve(session_id: str) -> dict[str, Any]:
+        live = _find(state, session_id)
+
+        def work() -> None:
+            result = live.session.approve()
+            if not result.ok:
+                raise SessionStateError(f"the approved code did not give a trajectory: {result.error}")
+            live.result = result
+
+        state.jobs.start(live, "running the approved code", work, lambda: setattr(live, "result", None))
+        return live.to_dict()
+
+    @app.post("/api/sessions/{session_id}/cancel")
+    def cancel(session_id: str) -> dict[str, Any]:
+        live = _find(state, session_id)
+        state.jobs.cancel(live)
+        return live.to_dict()
+
+
+def _new_live(state: ServerState, case: Case) -> LiveSession:
+    session = state.services.new_session(case)
+    live = LiveSession(case=case, session=session, status="ready")
+    session.on_progress = live.say
+
+    def work() -> None:
+        add_version(live, case.instruction, session.draft())
+
+    state.live[live.id] = live
+    state.jobs.start(live, "asking for a plan", work, lambda: None)
+    return live
+
+
+def _drop_after(live: LiveSession, checkpoint: int) -> None:
+    """Roll back what a cancelled feedback request added."""
+    if len(live.session.versions) - 1 > checkpoint >= 0:
+        live.session.rewind(checkpoint)
+    while live.versions and live.versions[-1].checkpoint > checkpoint:
+        live.versions.pop()
+    live.current = len(live.versions) - 1
+
+
+def _find(state: ServerState, session_id: str) -> LiveSession:
+    live = state.live.get(session_id)
+    if live is None:
+        raise SessionStateError(
+            f"session {session_id!r} is not open on this server; a stored session can be viewed, not "
+            "changed: start a new one with the same case"
+        )
+    return live
+
+
+def _output_routes(app: FastAPI, state: ServerState) -> None:
+    @app.get("/api/sessions/{session_id}/result")
+    def result(session_id: str) -> Response:
+        live = _find(state, session_id)
+        if live.result is None:
+            raise SessionStateError("there is no approved result yet")
+        text = json.dumps(live.result.to_dict(), indent=1)
+        headers = {"Content-Disposition": f'attachment; filename="{result_file_name(live)}"'}
+        return Response(text, media_type="application/json", headers=headers)
+
+    @app.post("/api/sessions/{session_id}/simulate")
+    def simulate(session_id: str, body: SimulateBody) -> dict[str, Any]:
+        live = _find(state, session_id)
+        if live.result is None or live.result.trajectory is None:
+            raise SessionStateError("approve a plan first; the simulator runs the approved result")
+        folder = work_folder(state.services.work_dir, live)
+        result = live.result
+
+        def work() -> None:
+            live.simulation = state.services.simulate(result, body.robot, folder)
+            live.result = result
+
+        state.jobs.start(live, f"simulating on the {body.robot}", work, lambda: None)
+        return live.to_dict()
+
+    @app.get("/api/sessions/{session_id}/files/{name}")
+    def output_file(session_id: str, name: str) -> FileResponse:
+        live = _find(state, session_id)
+        folder = work_folder(state.services.work_dir, live)
+        if name not in {p.name for p in folder.iterdir()}:
+            raise InputError(f"no file {name!r} for this session")
+        return FileResponse(folder / name)

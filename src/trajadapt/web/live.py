@@ -1,0 +1,158 @@
+"""Review sessions held by the server: one AdaptationSession each, worked on by background jobs.
+
+An LLM call takes seconds to a minute, so every request that needs one starts a job on a thread and
+returns at once; the page polls the session's state. Cancelling abandons the job: the page is free
+at once and whatever the abandoned call adds to the conversation is rolled back when it returns.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+import traceback
+import uuid
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Literal
+
+from trajadapt.case import Case
+from trajadapt.errors import SessionStateError, TrajadaptError
+from trajadapt.plan import Plan
+from trajadapt.session import AdaptationResult, AdaptationSession
+from trajadapt.trajectory import Trajectory
+
+Status = Literal["working", "ready", "approved", "failed"]
+
+
+@dataclass
+class Version:
+    """One plan shown to the user, what led to it and the path its code proposes."""
+
+    index: int
+    request: str  # the instruction or the feedback that produced it
+    plan: Plan
+    proposed: list[list[float]] | None
+    problem: str | None
+    checkpoint: int  # the session's plan version to rewind to
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form for the page."""
+        return {
+            "index": self.index, "request": self.request, "steps": list(self.plan.steps),
+            "code": self.plan.code, "proposed": self.proposed, "problem": self.problem,
+        }  # fmt: skip
+
+
+@dataclass
+class LiveSession:
+    """A session the server is working on, with its versions, job state and outputs."""
+
+    case: Case
+    session: AdaptationSession
+    id: str = field(default_factory=lambda: uuid.uuid4().hex[:12])
+    versions: list[Version] = field(default_factory=list)
+    current: int = -1
+    status: Status = "working"
+    activity: str = "starting"
+    activity_since: float = field(default_factory=time.time)
+    error: str | None = None
+    result: AdaptationResult | None = None
+    simulation: dict[str, Any] | None = None
+    job: int = 0
+    lock: threading.Lock = field(default_factory=threading.Lock)  # held by the job touching ``session``
+
+    def to_dict(self) -> dict[str, Any]:
+        """The state the page draws."""
+        return {
+            "id": self.id, "live": True, "status": self.status,
+            "activity": self.activity, "elapsed_s": round(time.time() - self.activity_since, 1),
+            "error": self.error, "case": _case_view(self.case), "current": self.current,
+            "versions": [v.to_dict() for v in self.versions],
+            "result": self.result.to_dict() if self.result else None, "simulation": self.simulation,
+        }  # fmt: skip
+
+    def say(self, activity: str) -> None:
+        """Progress from the session ("asking local", "running the code")."""
+        self.activity, self.activity_since = activity, time.time()
+
+
+def _case_view(case: Case) -> dict[str, Any]:
+    return {"name": case.name, **case.to_dict()}
+
+
+class Jobs:
+    """Runs one job at a time per live session on a thread; maps failures to words for the page."""
+
+    def start(self, live: LiveSession, what: str, work: Callable[[], None], undo: Callable[[], None]) -> None:
+        """Run ``work`` in the background; ``undo`` rolls its effect back if it was cancelled meanwhile.
+
+        Raises:
+            SessionStateError: the session is already working.
+        """
+        if live.status == "working":
+            raise SessionStateError(f"the session is busy ({live.activity}); wait or cancel it")
+        live.job += 1
+        token = live.job
+        live.status, live.error = "working", None
+        live.say(what)
+        threading.Thread(target=self._run, args=(live, token, work, undo), daemon=True).start()
+
+    @staticmethod
+    def _run(live: LiveSession, token: int, work: Callable[[], None], undo: Callable[[], None]) -> None:
+        with live.lock:
+            if token != live.job:
+                return  # cancelled before it started
+            try:
+                work()
+            except TrajadaptError as exc:
+                outcome: tuple[Status, str | None] = (
+                    "ready" if live.versions else "failed",
+                    f"{type(exc).__name__}: {exc}",
+                )
+            except Exception as exc:  # noqa: BLE001 - shown on the page in words, logged in full
+                traceback.print_exc()
+                outcome = (
+                    "ready" if live.versions else "failed",
+                    f"internal error ({type(exc).__name__}: {exc})",
+                )
+            else:
+                outcome = ("approved" if live.result is not None else "ready", None)
+            if token != live.job:
+                undo()
+                return
+            live.status, live.error = outcome
+            live.say("idle")
+
+    @staticmethod
+    def cancel(live: LiveSession) -> None:
+        """Abandon the running job; the page may go on at once."""
+        if live.status != "working":
+            raise SessionStateError("nothing is running to cancel")
+        live.job += 1
+        live.status = "ready" if live.versions else "failed"
+        live.error = "cancelled: the answer of that request will be discarded"
+        live.say("idle")
+
+
+def add_version(live: LiveSession, request: str, plan: Plan) -> None:
+    """Record a new plan with its preview (the code run once on the trajectory)."""
+    live.say("running the code for a preview")
+    outcome = live.session.preview()
+    proposed = outcome.to_rows() if isinstance(outcome, Trajectory) else None
+    problem = None if isinstance(outcome, Trajectory) else outcome
+    checkpoint = len(live.session.versions) - 1
+    live.versions.append(Version(len(live.versions), request, plan, proposed, problem, checkpoint))
+    live.current = len(live.versions) - 1
+
+
+def result_file_name(live: LiveSession) -> str:
+    """The download name of the result."""
+    return f"{live.case.name}.result.json"
+
+
+def work_folder(root: Path, live: LiveSession) -> Path:
+    """Where a session's simulation pictures go."""
+    folder = root / live.id
+    folder.mkdir(parents=True, exist_ok=True)
+    return folder

@@ -1,0 +1,85 @@
+"""What the review server needs from the rest of trajadapt: sessions, case files, the log, the simulator."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from trajadapt.backends.base import Backend
+from trajadapt.case import Case, load_case
+from trajadapt.errors import InputError
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
+from trajadapt.store import Store
+
+
+@dataclass
+class Services:
+    """The backend, sandbox, log and folders one server uses for all its sessions."""
+
+    backend: Backend
+    sandbox: Sandbox
+    store: Store
+    settings: SessionSettings
+    work_dir: Path
+    cases_dir: Path | None = None
+    simulator: Callable[[AdaptationResult, str, Path], dict[str, Any]] | None = None
+
+    def new_session(self, case: Case) -> AdaptationSession:
+        """A session on ``case`` logged to the shared SQLite log."""
+        return AdaptationSession(case, self.backend, self.sandbox, self.settings, self.store)
+
+    def case_names(self) -> list[str]:
+        """Case files under the cases folder, as paths relative to it."""
+        if self.cases_dir is None:
+            return []
+        return sorted(str(p.relative_to(self.cases_dir)) for p in self.cases_dir.rglob("*.json"))
+
+    def load_named_case(self, name: str) -> Case:
+        """A case file of the cases folder (never outside it).
+
+        Raises:
+            InputError: no cases folder, a path outside it, or a bad case file.
+        """
+        if self.cases_dir is None:
+            raise InputError("the server was started without --cases; upload a case file instead")
+        root = self.cases_dir.resolve()
+        path = (root / name).resolve()
+        if root not in path.parents or not path.is_file():
+            raise InputError(f"no case {name!r} in {self.cases_dir}")
+        return load_case(path)
+
+    def stored_sessions(self) -> list[dict[str, Any]]:
+        """Sessions in the log (newest first)."""
+        return self.store.recent_sessions()
+
+    def simulate(self, result: AdaptationResult, robot: str, folder: Path) -> dict[str, Any]:
+        """Run ``result`` on ``robot``; the report with the picture and animation file names.
+
+        Raises:
+            InputError: the simulator is not installed.
+        """
+        if self.simulator is None:
+            raise InputError("the simulator is not available on this server (install trajadapt[sim])")
+        return self.simulator(result, robot, folder)
+
+
+def pybullet_simulator(positive_x: str) -> Callable[[AdaptationResult, str, Path], dict[str, Any]]:
+    """The simulator the server uses: pybullet, pictures into the session's folder."""
+
+    def run(result: AdaptationResult, robot: str, folder: Path) -> dict[str, Any]:
+        from trajadapt.sim import SimulationOptions, simulate
+
+        assert result.trajectory is not None
+        image, animation = folder / f"{robot}.png", folder / f"{robot}.gif"
+        options = SimulationOptions(image=image, animation=animation, positive_x=positive_x)
+        report = simulate(
+            result.trajectory, result.case.scene, robot, options, original=result.case.trajectory
+        )
+        data = report.to_dict()
+        data.pop("executed")
+        return {**data, "image": image.name, "animation": animation.name, "summary": report.summary_lines()}
+
+    return run

@@ -44,20 +44,24 @@ class Arm(Robot):
         for joint, angle in zip(self.joints, angles, strict=True):
             self.world.call("resetJointState", self.body, joint, float(angle))
 
-    def _solve(self, target: Array, orientation: bool = True) -> Array:
-        """Joint angles for ``target`` from the current state (a few refining passes)."""
+    def _inverse_kinematics(
+        self, target: Array, rest: list[float], iterations: int, threshold: float, orientation: bool = True
+    ) -> Array:
+        """Joint angles from pybullet's IK for ``target``, seeded by the current state, within the limits."""
         extra = {"targetOrientation": self.down} if orientation else {}
+        angles = self.world.call(
+            "calculateInverseKinematics", self.body, END_EFFECTOR, list(target),
+            lowerLimits=list(self.lower), upperLimits=list(self.upper),
+            jointRanges=list(self.upper - self.lower), restPoses=rest,
+            maxNumIterations=iterations, residualThreshold=threshold, **extra,
+        )[: len(self.joints)]  # fmt: skip
+        return np.asarray(np.clip(np.asarray(angles, dtype=np.float64), self.lower, self.upper))
+
+    def _solve(self, target: Array, orientation: bool = True) -> Array:
+        """Joint angles for ``target`` from the current state (a few refining passes, joints set there)."""
         angles = np.zeros(len(self.joints))
         for _ in range(3):
-            angles = np.asarray(
-                self.world.call(
-                    "calculateInverseKinematics", self.body, END_EFFECTOR, list(target),
-                    lowerLimits=list(self.lower), upperLimits=list(self.upper),
-                    jointRanges=list(self.upper - self.lower), restPoses=[0.0] * len(self.joints),
-                    maxNumIterations=200, residualThreshold=1e-6, **extra,
-                )
-            )[: len(self.joints)]  # fmt: skip
-            angles = np.clip(angles, self.lower, self.upper)
+            angles = self._inverse_kinematics(target, [0.0] * len(self.joints), 200, 1e-6, orientation)
             self._set_joints(angles)
         return angles
 
@@ -87,16 +91,8 @@ class Arm(Robot):
     def control(self, t: float, reference: Reference) -> None:
         """Position-control the joints to the inverse-kinematics solution of the reference point."""
         current = [self.world.call("getJointState", self.body, j)[0] for j in self.joints]
-        target = reference.position(t)
-        extra = {"targetOrientation": self.down}
-        angles = self.world.call(
-            "calculateInverseKinematics", self.body, END_EFFECTOR, list(target),
-            lowerLimits=list(self.lower), upperLimits=list(self.upper),
-            jointRanges=list(self.upper - self.lower), restPoses=current,
-            maxNumIterations=50, residualThreshold=1e-5, **extra,
-        )[: len(self.joints)]  # fmt: skip
+        angles = self._inverse_kinematics(reference.position(t), current, 50, 1e-5)
         self.world.call(
             "setJointMotorControlArray", self.body, self.joints, self.world.pb.POSITION_CONTROL,
-            targetPositions=list(np.clip(angles, self.lower, self.upper)),
-            forces=[MOTOR_FORCE] * len(self.joints),
+            targetPositions=list(angles), forces=[MOTOR_FORCE] * len(self.joints),
         )  # fmt: skip

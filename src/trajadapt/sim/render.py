@@ -6,8 +6,10 @@ object labels are projected with the camera's own matrices and drawn with Pillow
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -48,9 +50,8 @@ class Camera:
 
     def pixels(self, points: Array) -> list[tuple[float, float]]:
         """Image coordinates of world points (N, 3)."""
-        homogeneous = np.c_[
-            np.asarray(points).reshape(-1, 3), np.ones(len(np.asarray(points).reshape(-1, 3)))
-        ]
+        rows = np.asarray(points).reshape(-1, 3)
+        homogeneous = np.c_[rows, np.ones(len(rows))]
         clip = homogeneous @ self._matrix.T
         ndc = clip[:, :3] / clip[:, 3:4]
         width, height = self.size
@@ -86,23 +87,18 @@ class Camera:
 
 def save_png(image: Image.Image, path: Path) -> None:
     """Write a PNG atomically."""
-    write_bytes_atomic(path, _encode(image, "PNG"))
+    write_bytes_atomic(path, _encode(image, "PNG", optimize=True))
 
 
 def save_gif(frames: list[Image.Image], path: Path, frame_ms: int) -> None:
     """Write an animated GIF (looping) atomically."""
     if not frames:
         raise ValueError("no frames to write")
-    import io
+    encoded = _encode(frames[0], "GIF", save_all=True, append_images=frames[1:], duration=frame_ms, loop=0)
+    write_bytes_atomic(path, encoded)
 
+
+def _encode(image: Image.Image, kind: str, **options: Any) -> bytes:
     buffer = io.BytesIO()
-    frames[0].save(buffer, format="GIF", save_all=True, append_images=frames[1:], duration=frame_ms, loop=0)
-    write_bytes_atomic(path, buffer.getvalue())
-
-
-def _encode(image: Image.Image, kind: str) -> bytes:
-    import io
-
-    buffer = io.BytesIO()
-    image.save(buffer, format=kind, optimize=True)
+    image.save(buffer, format=kind, **options)
     return buffer.getvalue()

@@ -24,7 +24,7 @@ from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
-from trajadapt.results import write_json_atomic
+from trajadapt.results import sibling_file, write_json_atomic
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
@@ -165,19 +165,14 @@ def adapt(
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
-    plot_file = plot_file or out.with_name(out.name.removesuffix(".json").removesuffix(".result") + ".png")
+    plot_file = plot_file or sibling_file(out, ".png")
     limits = Constraints(min_clearance=clearance, max_speed=max_speed)
     result = _run_session(case, chosen, settings, yes, limits, project_onto)
     _save(result, out, plot_file, settings)
     if not result.ok:
         raise click.exceptions.Exit(1)
     if simulate_on is not None:
-        stem = out.name.removesuffix(".json").removesuffix(".result")
-        image, report = (
-            out.with_name(f"{stem}.{simulate_on}.png"),
-            out.with_name(f"{stem}.{simulate_on}.sim.json"),
-        )
-        run_and_report(out, simulate_on, image, report, axes=settings.axes)
+        run_and_report(out, simulate_on, axes=settings.axes)
 
 
 def _load_case(

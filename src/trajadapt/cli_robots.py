@@ -9,7 +9,7 @@ import numpy as np
 
 from trajadapt.case import load_scene
 from trajadapt.errors import InputError
-from trajadapt.results import write_json_atomic
+from trajadapt.results import sibling_file, write_json_atomic
 from trajadapt.sim.inputs import load_run_input
 
 ROBOT_NAMES = ("arm", "drone", "ground")
@@ -68,17 +68,20 @@ def simulate(
     left. Reports the tracking error, waypoints the robot cannot reach, and writes a
     picture (original blue, executed red), a JSON report and, with --gif, an animation.
     """
-    stem = result_file.name.removesuffix(".json").removesuffix(".result")
-    image_file = image_file or result_file.with_name(f"{stem}.{robot}.png")
-    report_file = report_file or result_file.with_name(f"{stem}.{robot}.sim.json")
     run_and_report(result_file, robot, image_file, report_file, gif_file, gui, scale, offset, axes)
 
 
 def run_and_report(
-    source: Path, robot: str, image: Path, report_file: Path, gif: Path | None = None, gui: bool = False,
-    scale: float | None = None, offset: tuple[float, float, float] | None = None, axes: str = "paper",
+    source: Path, robot: str, image: Path | None = None, report_file: Path | None = None,
+    gif: Path | None = None, gui: bool = False, scale: float | None = None,
+    offset: tuple[float, float, float] | None = None, axes: str = "paper",
 ) -> None:  # fmt: skip
-    """Simulate ``source`` and print and write the report (shared by 'simulate' and 'adapt --simulate')."""
+    """Simulate ``source`` and print and write the report (shared by 'simulate' and 'adapt --simulate').
+
+    The picture and report default to ``<source stem>.<robot>.png`` and ``.<robot>.sim.json`` beside it.
+    """
+    image = image or sibling_file(source, f".{robot}.png")
+    report_file = report_file or sibling_file(source, f".{robot}.sim.json")
     from trajadapt.console import Progress
     from trajadapt.sim import SimulationOptions, simulate
 

@@ -11,6 +11,12 @@ from typing import Any
 from trajadapt.errors import InputError
 
 
+def sibling_file(result_file: Path, suffix: str) -> Path:
+    """A file next to a result, named after it: ``case.result.json`` + ``.arm.png`` -> ``case.arm.png``."""
+    stem = result_file.name.removesuffix(".json").removesuffix(".result")
+    return result_file.with_name(stem + suffix)
+
+
 def write_json_atomic(path: Path, data: Any) -> None:
     """Write ``data`` as JSON to ``path`` through a temporary file, so no half-written file remains.
 

@@ -90,15 +90,13 @@ def _mapping(
     scene: Scene,
     options: SimulationOptions,
 ) -> WorkspaceMap:
+    mirror = options.positive_x == "left"
     if options.scale is not None:
-        return WorkspaceMap(
-            float(options.scale), options.offset or (0.0, 0.0, 0.0), options.positive_x == "left"
-        )
+        return WorkspaceMap(float(options.scale), options.offset or (0.0, 0.0, 0.0), mirror)
     everything = [trajectory.positions, original.positions]
     if scene.objects:
         everything.append(np.array([o.position for o in scene.objects]))
     flat_z = 0.0 if robot_class.planar else None
-    mirror = options.positive_x == "left"
     return fit_workspace(np.concatenate(everything), robot_class.workspace, flat_z=flat_z, mirror_x=mirror)
 
 

@@ -37,7 +37,7 @@ class WorkspaceMap:
 
     @property
     def _signs(self) -> Array:
-        return np.array([-1.0 if self.mirror_x else 1.0, 1.0, 1.0])
+        return _axis_signs(self.mirror_x)
 
     def to_robot(self, points: Array) -> Array:
         """Case-unit positions (N, 3) in the robot's frame."""
@@ -68,7 +68,7 @@ def fit_workspace(
         flat_z: for a ground robot, ignore z when fitting and put the paths at this height.
         mirror_x: the case's +X is the robot's left (the paper's convention).
     """
-    points = np.asarray(points, dtype=np.float64).reshape(-1, 3) * [-1.0 if mirror_x else 1.0, 1.0, 1.0]
+    points = np.asarray(points, dtype=np.float64).reshape(-1, 3) * _axis_signs(mirror_x)
     low, high = points.min(axis=0), points.max(axis=0)
     extent = high - low
     size = np.asarray(box.size, dtype=np.float64)
@@ -79,3 +79,8 @@ def fit_workspace(
     if flat_z is not None:
         offset[2] = flat_z
     return WorkspaceMap(scale, (float(offset[0]), float(offset[1]), float(offset[2])), mirror_x)
+
+
+def _axis_signs(mirror_x: bool) -> Array:
+    """Multipliers that turn case axes into robot axes (x flipped when mirrored)."""
+    return np.array([-1.0 if mirror_x else 1.0, 1.0, 1.0])

@@ -164,7 +164,7 @@ class AdaptationSession:
         self._last_stdout = ""
         self._last_notes: tuple[str, ...] = ()
         self._started = time.perf_counter()
-        self._checkpoints: list[tuple[int, int]] = []  # (messages, turns) right after each plan
+        self._checkpoints: list[tuple[int, int, Plan]] = []  # (messages, turns, plan) right after each plan
 
     @property
     def plan(self) -> Plan | None:
@@ -221,7 +221,7 @@ class AdaptationSession:
     @property
     def versions(self) -> list[Plan]:
         """Every plan of the conversation so far, oldest first (index = version)."""
-        return [self.turns[turns - 1].plan for _, turns in self._checkpoints if self.turns[turns - 1].plan]  # type: ignore[misc]
+        return [plan for _, _, plan in self._checkpoints]
 
     def preview(self) -> Trajectory | str:
         """Run the current plan's code once, without repair: the proposed trajectory, or what went wrong."""
@@ -237,7 +237,7 @@ class AdaptationSession:
             raise SessionStateError(
                 f"there is no plan version {version}; versions are 0..{len(self._checkpoints) - 1}"
             )
-        messages, turns = self._checkpoints[version]
+        messages, turns, _ = self._checkpoints[version]
         del self.messages[messages:], self.turns[turns:], self._checkpoints[version + 1 :]
         self._log("undo", self._require_plan().code, {"user_text": f"back to version {version}"}, None, {})
         return self._require_plan()
@@ -265,7 +265,7 @@ class AdaptationSession:
                 kind, user_text = "format-retry", str(exc)
                 continue
             self._record(Turn(kind, user_text, plan, completion))
-            self._checkpoints.append((len(self.messages), len(self.turns)))
+            self._checkpoints.append((len(self.messages), len(self.turns), plan))
             return plan
         raise AssertionError("unreachable")
 

@@ -67,3 +67,20 @@ def test_environment_lists_objects_description_and_constraints(simple_case: Case
     assert "- box: [0.2, 0.5, 0.5]" in user and "- Red Mug:" in user
     assert "A kitchen." in user and "Stay below z = 1." in user
     assert "20 waypoints" in user and "start [0, 0, 0.5]" in user
+
+
+def test_prompt_code_calls_only_what_the_sandbox_defines() -> None:
+    import ast
+    import json
+    import re
+
+    from trajadapt.skills import SKILLS
+
+    text = system_prompt(AXIS_CONVENTIONS["paper"])
+    snippets = re.findall(r"-> (t = [^;\n]+)", text)
+    snippets += [json.loads(line)["python_code"] for line in text.splitlines() if line.startswith('{"high')]
+    assert len(snippets) >= 15
+    defined = {f.__name__ for f in SKILLS} | {f.signature.split("(")[0] for f in CONTRACT} | {"len"}
+    for snippet in snippets:
+        calls = {n.func.id for n in ast.walk(ast.parse(snippet)) if isinstance(n, ast.Call)}
+        assert calls <= defined, (snippet, calls - defined)

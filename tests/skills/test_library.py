@@ -148,6 +148,19 @@ def test_missing_object_and_words_are_explained() -> None:
         as_point("top")
     with pytest.raises(ValueError, match="shape \\(40, 3\\)"):
         shape.shift(np.zeros((40, 3)), "left")
+    with pytest.raises(ValueError, match="pass it whole"):
+        objects.pass_through(curve(), np.array([0.3, 1.0, 1.0])[0])
+    with pytest.raises(ValueError, match="midpoint"):
+        objects.pass_through(curve(), [0.3, 1.0, 1.0], [0.6, 1.5, 1.0])
+    with pytest.raises(ValueError, match="detect_objects\\('mug'\\)"):
+        events.wait(curve(), "mug", 5)
+
+
+def test_wait_takes_the_count_first_too() -> None:
+    t = curve()
+    assert np.array_equal(events.wait(t, 5, "middle"), events.wait(t, "middle", 5))
+    assert np.array_equal(events.wait(t, 5, [0.3, 1.0, 1.0]), events.wait(t, [0.3, 1.0, 1.0], 5))
+    assert len(events.wait(t, 10, 3)) == N + 3  # two numbers: index first, as documented
 
 
 def test_speed_near_an_object_only() -> None:

@@ -113,6 +113,11 @@ def as_point(point: Any, name: str = "point") -> Array:
             f"not the word {point!r}"
         )
     array = np.asarray(point, dtype=np.float64).reshape(-1)
+    if array.size == 1:
+        raise ValueError(
+            f"{name} must be a position [x, y, z], got the single number {point!r}: detect_objects('name') "
+            "already returns [x, y, z], pass it whole (do not index it)"
+        )
     if array.size not in (3, 4):
         raise ValueError(f"{name} must be a position [x, y, z], got {point!r}")
     return array[:3].copy()

@@ -30,7 +30,10 @@ def _index(t: Array, at: Any) -> int:
             "end": len(t) - 1,
         }
         if at.strip().lower() not in words:
-            raise ValueError(f"unknown position {at!r}; use an index, a point, or one of {', '.join(words)}")
+            raise ValueError(
+                f"unknown position {at!r}; use an index, a point (for an object: detect_objects({at!r})), "
+                f"or one of {', '.join(words)}"
+            )
         return words[at.strip().lower()]
     if isinstance(at, int | np.integer):
         return int(at) % len(t)
@@ -53,10 +56,17 @@ def wait(trajectory: Any, at: Any, steps: int) -> Array:
     that many copies of it with velocity 0.
     """
     t = as_trajectory(trajectory)
+    if _is_count(at) and not _is_count(steps):
+        at, steps = steps, at  # wait(t, 7, 'goal'): the count came first
     k = _index(t, at)
     pause = np.repeat(t[k : k + 1], max(int(steps), 0), axis=0)
     pause[:, 3] = 0.0
     return np.vstack([t[: k + 1], pause, t[k + 1 :]])
+
+
+def _is_count(value: Any) -> bool:
+    """Whether value is a whole number (not a word, a position or a bool)."""
+    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
 # Direction words that mean "keep going the way the path ends" rather than a fixed axis.

@@ -172,6 +172,12 @@ def pass_through(trajectory: Any, point: Any, index: int | None = None, width: f
     """
     t = as_trajectory(trajectory)
     target = as_point(point)
+    if index is not None and np.size(index) != 1:
+        raise ValueError(
+            "index must be a waypoint number; to pass through two points call pass_through once for each "
+            "(t = pass_through(t, a); t = pass_through(t, b)), or use pass_through(t, midpoint(a, b)) "
+            "for the point between them"
+        )
     k = nearest_index(t, target) if index is None else int(index) % len(t)
     s = progress(t)
     ramp = smoothstep(s)

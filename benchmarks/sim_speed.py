@@ -32,7 +32,7 @@ RUNS: dict[str, tuple[str, Adapt]] = {
     "arm": ("arm/closer_to_bowl.json", lambda t, o: SKILLS["move_closer"](t, o["yellow bowl"], "a lot")),
     "drone": ("drone/further_from_lamp.json", lambda t, o: SKILLS["move_away"](t, o["lamp"], 1.0)),
     "ground": ("ground/left_20_keep_10_box.json",
-               lambda t, o: SKILLS["keep_at_least"](SKILLS["shift"](t, "left", 20), o["box"], 10)),
+               lambda t, o: SKILLS["avoid"](SKILLS["shift"](t, "left", 20), o["box"], 10)),
 }  # fmt: skip
 
 

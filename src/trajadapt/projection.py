@@ -23,7 +23,7 @@ from trajadapt.constraints import Constraints, find_violations
 from trajadapt.errors import DependencyNotInstalled
 from trajadapt.scene import Scene
 from trajadapt.skills.core import Array
-from trajadapt.skills.objects import keep_at_least, sideways_from
+from trajadapt.skills.objects import avoid, sideways_from
 
 SMOOTHING_WEIGHT = 4.0
 ROUNDS = 4
@@ -69,7 +69,7 @@ def _finish_clearance(trajectory: Array, scene: Scene, constraints: Constraints)
     names = set(constraints.clearance_objects)
     centres = [np.asarray(o.position) for o in scene.objects if not names or o.name in names]
     assert constraints.min_clearance is not None
-    fixed = keep_at_least(trajectory, centres, constraints.min_clearance)
+    fixed = avoid(trajectory, centres, constraints.min_clearance)
     lower = np.array(constraints.lower)
     upper = np.array(constraints.upper)
     fixed[:, :3] = np.clip(fixed[:, :3], lower, upper)

@@ -91,7 +91,7 @@ CASES: list[tuple[dict[str, Any], Make, Make]] = [
     ),
     (
         {"kind": "distance", "object": "cup", "relation": "at_least", "value": 0.6},
-        lambda t: objects.keep_at_least(t, OBJECTS["cup"], 0.6),
+        lambda t: objects.avoid(t, OBJECTS["cup"], 0.6),
         lambda t: t,
     ),
     (

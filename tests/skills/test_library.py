@@ -118,17 +118,18 @@ def test_move_closer_and_away() -> None:
     assert np.allclose(away[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, away)
 
 
-def test_keep_at_least_from_one_and_several_points() -> None:
+def test_avoid_from_one_and_several_points() -> None:
     t = curve()
     near = [[0.3, 1.0, 1.0], [0.0, 0.4, 1.0]]
-    out = objects.keep_at_least(t, near, 0.25)
+    out = objects.avoid(t, near, 0.25)
     for point in near:
         assert distances(out, point).min() >= 0.25 - 1e-9
     assert np.allclose(out[-1], t[-1])
     steps = np.linalg.norm(np.diff(out[:, :3], axis=0), axis=1)
     assert steps.max() < 4 * np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max()
-    single = objects.keep_at_least(t, [0.3, 1.0, 1.0], 0.25)
+    single = objects.avoid(t, [0.3, 1.0, 1.0], 0.25)
     assert distances(single, [0.3, 1.0, 1.0]).min() >= 0.25 - 1e-9
+    assert np.array_equal(objects.avoid(t, [3.0, 1.0, 1.0], 0.25), t)  # already clear: nothing moves
 
 
 def test_pass_through_and_reach() -> None:

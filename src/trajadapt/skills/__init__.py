@@ -23,7 +23,7 @@ SKILLS: tuple[Callable[..., Any], ...] = (
     shape.lift_middle,
     objects.move_closer,
     objects.move_away,
-    objects.keep_at_least,
+    objects.avoid,
     objects.pass_through,
     objects.reach,
     objects.midpoint,

@@ -76,15 +76,15 @@ def move_away(trajectory: Any, point: Any, amount: Any = None) -> Array:
     return t
 
 
-def keep_at_least(trajectory: Any, points: Any, distance: float, iterations: int = 50) -> Array:
-    """Keep every waypoint at least distance away from a point or a list of points.
+def avoid(trajectory: Any, points: Any, clearance: float, iterations: int = 50) -> Array:
+    """Give a point or a list of points a clearance: every waypoint at least clearance away.
 
-    Make every waypoint at least distance away from each point (one point or a list of points),
-    spreading the correction smoothly over neighbouring waypoints.
+    Make every waypoint at least clearance away from each point (one point or a list of points),
+    spreading the correction smoothly over neighbouring waypoints. Waypoints already further away stay.
     """
     t = as_trajectory(trajectory)
     centres = _points(points)
-    minimum = float(distance)
+    minimum = float(clearance)
     for _ in range(int(iterations)):
         push = sum((clearance_push(t, centre, minimum * 1.02) for centre in centres), np.zeros((len(t), 3)))
         if not np.any(push):

@@ -84,3 +84,14 @@ def test_prompt_code_calls_only_what_the_sandbox_defines() -> None:
     for snippet in snippets:
         calls = {n.func.id for n in ast.walk(ast.parse(snippet)) if isinstance(n, ast.Call)}
         assert calls <= defined, (snippet, calls - defined)
+
+
+def test_waypoints_in_prompt_adds_every_row_after_the_fixed_prefix(simple_case: Case) -> None:
+    summary = first_messages(simple_case, AXIS_CONVENTIONS["paper"])
+    full = first_messages(simple_case, AXIS_CONVENTIONS["paper"], waypoints=True)
+    assert full[0] == summary[0]
+    rows = [line for line in full[1].content.splitlines() if line.startswith("[")]
+    assert len(rows) == len(simple_case.trajectory)
+    assert not any(line.startswith("[") for line in summary[1].content.splitlines())
+    first = simple_case.trajectory.array[0]
+    assert rows[0] == "[" + ", ".join(f"{value:.3g}" for value in first) + "]"

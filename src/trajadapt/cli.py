@@ -208,6 +208,7 @@ def _run_session(
         repair_attempts=settings.repair_attempts,
         temperature=settings.temperature,
         seed=settings.seed,
+        waypoints_in_prompt=settings.waypoints_in_prompt,
         constraints=limits,
         project=project_onto,
     )
@@ -291,6 +292,11 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
 )
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
 @click.option("--repairs", type=click.IntRange(0, 10), default=None, help="Repair rounds (default 2).")
+@click.option(
+    "--waypoints-in-prompt/--summary-in-prompt",
+    default=None,
+    help="Send every waypoint to the LLM, or only the trajectory's summary (default; see the README).",
+)
 def bench(
     cases: tuple[Path, ...],
     backend: str | None,
@@ -303,16 +309,30 @@ def bench(
     expectations: Path | None,
     axes: str | None,
     repairs: int | None,
+    waypoints_in_prompt: bool | None,
 ) -> None:
     """Run every case in CASES (files or folders) and score the results against expectations.
 
     Writes one result file per case, summary.json, report.md and a figure per failed case into the
     output folder. Cases that already have a result are skipped unless --force.
     """
-    settings = load_settings({"backend": backend, "axes": axes, "repair_attempts": repairs})
+    settings = load_settings(
+        {
+            "backend": backend,
+            "axes": axes,
+            "repair_attempts": repairs,
+            "waypoints_in_prompt": waypoints_in_prompt,
+        }
+    )
     found = discover_cases(list(cases), expectations)
     config = BenchConfig(
-        out_dir or Path("bench-out") / mode, mode, settings.axes, settings.repair_attempts, jobs, force
+        out_dir or Path("bench-out") / mode,
+        mode,
+        settings.axes,
+        settings.repair_attempts,
+        jobs,
+        force,
+        settings.waypoints_in_prompt,
     )
     if rescore:
         click.echo(f"judged {rescore_results(found, config)} stored result(s) again")

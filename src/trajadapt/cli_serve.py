@@ -101,6 +101,7 @@ def _build_app(
         repair_attempts=settings.repair_attempts,
         temperature=settings.temperature,
         seed=settings.seed,
+        waypoints_in_prompt=settings.waypoints_in_prompt,
     )
     services = Services(
         backend=make_backend(settings, options, model_path),

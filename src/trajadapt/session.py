@@ -46,6 +46,7 @@ class SessionSettings:
     temperature: float = 0.0
     max_tokens: int = 1024
     seed: int | None = 0
+    waypoints_in_prompt: bool = False
 
 
 @dataclass(frozen=True)
@@ -156,7 +157,9 @@ class AdaptationSession:
         self.store = store
         self.on_progress = on_progress or (lambda _message: None)
         self.turns: list[Turn] = []
-        self.messages: list[ChatMessage] = list(first_messages(case, self.settings.axes, self.settings.mode))
+        self.messages: list[ChatMessage] = list(
+            first_messages(case, self.settings.axes, self.settings.mode, self.settings.waypoints_in_prompt)
+        )
         self.session_id: str | None = None
         self._llm_s = 0.0
         self._exec_s = 0.0

@@ -37,6 +37,7 @@ class Settings:
         repair_attempts: how often a failing code is sent back to the LLM before giving up.
         log: whether exchanges are logged to SQLite.
         isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
+        waypoints_in_prompt: send every waypoint, not only the trajectory's summary (longer prompts).
     """
 
     home: Path = field(default_factory=default_home)
@@ -49,6 +50,7 @@ class Settings:
     repair_attempts: int = 2
     log: bool = True
     isolation: str = "auto"
+    waypoints_in_prompt: bool = False
 
     @property
     def log_path(self) -> Path:
@@ -70,6 +72,7 @@ ENV_FIELDS = {
     "repair_attempts": int,
     "log": bool,
     "isolation": str,
+    "waypoints_in_prompt": bool,
 }
 
 

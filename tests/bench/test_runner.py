@@ -119,3 +119,15 @@ def test_rescore_judges_stored_results_again(tmp_path: Path, ovita_dir: Path) ->
     result = runner.invoke(cli, ["bench", str(folder), "--rescore", "--out", str(out)])
     assert result.exit_code == 0, result.output
     assert "judged 3 stored result(s) again" in result.output and "passed 0 of 2" in result.output
+
+
+def test_waypoints_in_prompt_reaches_the_request(tmp_path: Path, ovita_dir: Path) -> None:
+    folder = make_folder(tmp_path, ovita_dir)
+    cases = [case for case in discover_cases([folder]) if case.key == "ground/case"]
+    for waypoints in (False, True):
+        backend = ScriptedBackend(answers=[SHIFT_LEFT])
+        config = BenchConfig(out_dir=tmp_path / str(waypoints), waypoints_in_prompt=waypoints)
+        record = run_benchmark(cases, backend, config)[0]
+        user_text = backend.requests[0].messages[1].content
+        assert ("waypoints [x, y, z, velocity]" in user_text) is waypoints
+        assert record["waypoints_in_prompt"] is waypoints

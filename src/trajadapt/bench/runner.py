@@ -59,6 +59,7 @@ class BenchConfig:
     repair_attempts: int = 2
     jobs: int = 1
     force: bool = False
+    waypoints_in_prompt: bool = False
 
 
 def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
@@ -154,7 +155,10 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
     """Adapt one case (first plan approved) and score it; failures become an error record."""
     loaded = load_case(case.path)
     settings = SessionSettings(
-        axes=AXIS_CONVENTIONS[config.axes], mode=config.mode, repair_attempts=config.repair_attempts
+        axes=AXIS_CONVENTIONS[config.axes],
+        mode=config.mode,
+        repair_attempts=config.repair_attempts,
+        waypoints_in_prompt=config.waypoints_in_prompt,
     )
     session = AdaptationSession(loaded, backend, sandbox, settings)
     try:
@@ -163,6 +167,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
     except TrajadaptError as exc:
         record = session.failure(f"{type(exc).__name__}: {exc}").to_dict()
     record["mode"] = config.mode
+    record["waypoints_in_prompt"] = config.waypoints_in_prompt
     record["axes"] = config.axes
     record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
     record["evaluation"] = evaluate(

@@ -119,19 +119,29 @@ def _point(xyz: np.ndarray) -> str:
     return "[" + ", ".join(f"{value:.3g}" for value in xyz) + "]"
 
 
-def task_prompt(case: Case) -> str:
-    """The per-request part: environment, trajectory summary and the instruction."""
+def list_waypoints(trajectory: Trajectory) -> str:
+    """Every waypoint as ``[x, y, z, v]`` with 3 significant digits, one per line."""
+    return "\n".join("[" + ", ".join(f"{value:.3g}" for value in row) + "]" for row in trajectory.array)
+
+
+def task_prompt(case: Case, waypoints: bool = False) -> str:
+    """The per-request part: environment, trajectory summary (and every waypoint) and the instruction."""
+    trajectory = summarize_trajectory(case.trajectory)
+    if waypoints:
+        trajectory += "\n- waypoints [x, y, z, velocity]:\n" + list_waypoints(case.trajectory)
     return render(
         "task",
         environment=describe_environment(case),
-        trajectory=summarize_trajectory(case.trajectory),
+        trajectory=trajectory,
         instruction=case.instruction,
     )
 
 
-def first_messages(case: Case, axes: AxisConvention, mode: str = "skills") -> tuple[ChatMessage, ...]:
-    """The opening conversation for ``case``."""
+def first_messages(
+    case: Case, axes: AxisConvention, mode: str = "skills", waypoints: bool = False
+) -> tuple[ChatMessage, ...]:
+    """The opening conversation for ``case``; ``waypoints`` adds every waypoint to the summary."""
     return (
         ChatMessage("system", system_prompt(axes, mode)),
-        ChatMessage("user", task_prompt(case)),
+        ChatMessage("user", task_prompt(case, waypoints)),
     )

@@ -1,0 +1,42 @@
+"""Settings come in layers: defaults < config.toml < TRAJADAPT_* variables < flags."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from trajadapt.errors import InputError
+from trajadapt.settings import load_settings
+
+
+@pytest.fixture
+def home(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    monkeypatch.setenv("TRAJADAPT_HOME", str(tmp_path))
+    return tmp_path
+
+
+def test_defaults_keep_the_summary_prompt(home: Path) -> None:
+    settings = load_settings()
+    assert settings.home == home and not settings.waypoints_in_prompt and settings.repair_attempts == 2
+
+
+def test_each_layer_overrides_the_one_before(home: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    (home / "config.toml").write_text("repair_attempts = 4\nwaypoints_in_prompt = true\nmode = 'paper'\n")
+    assert load_settings().repair_attempts == 4 and load_settings().waypoints_in_prompt
+    monkeypatch.setenv("TRAJADAPT_REPAIR_ATTEMPTS", "1")
+    monkeypatch.setenv("TRAJADAPT_WAYPOINTS_IN_PROMPT", "no")
+    from_environment = load_settings()
+    assert from_environment.repair_attempts == 1 and not from_environment.waypoints_in_prompt
+    flagged = load_settings({"repair_attempts": 0, "waypoints_in_prompt": True, "mode": None})
+    assert flagged.repair_attempts == 0 and flagged.waypoints_in_prompt and flagged.mode == "paper"
+
+
+def test_bad_values_name_their_source(home: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("TRAJADAPT_SEED", "seven")
+    with pytest.raises(InputError, match="TRAJADAPT_SEED='seven'"):
+        load_settings()
+    monkeypatch.delenv("TRAJADAPT_SEED")
+    (home / "config.toml").write_text("colour = 'red'\n")
+    with pytest.raises(InputError, match="unknown setting 'colour'"):
+        load_settings()

@@ -70,6 +70,9 @@ def test_vague_amounts_scale_with_the_path() -> None:
     assert np.isclose(resolve_amount("a lot", t), 0.3 * 2.0)
     with pytest.raises(ValueError, match="unknown amount 'loads'"):
         shape.shift(t, "left", "loads")
+    assert resolve_amount("at least 0.5", t) == 0.5 and resolve_amount("0.2 m", t) == 0.2
+    with pytest.raises(ValueError, match="unknown amount 'between 0.1 and 0.3'"):
+        resolve_amount("between 0.1 and 0.3", t)  # two numbers: no guessing
     with pytest.raises(ValueError, match="unknown direction 'sideways'"):
         shape.shift(t, "sideways", 0.1)
 

@@ -5,6 +5,7 @@ Everything here is pure numpy, so the library also loads inside the sandbox chil
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -21,6 +22,8 @@ AMOUNT_WORDS = {
     "moderately": 0.15, "much": 0.3, "a lot": 0.3, "lot": 0.3, "very": 0.3, "far": 0.3,
     "large": 0.3, "significantly": 0.3, "very much": 0.4,
 }  # fmt: skip
+
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?")
 
 DIRECTION_SYNONYMS = {
     "left": "left", "right": "right", "front": "front", "forward": "front", "forwards": "front",
@@ -131,7 +134,7 @@ def extent(trajectory: Array) -> float:
 def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> float:
     """A distance from a number or a vague word ('a bit', 'a lot'), relative to the trajectory's size.
 
-    None and 0 both mean the default word's amount.
+    None and 0 both mean the default word's amount; a text holding one number ('at least 0.5') is that number.
 
     Raises:
         ValueError: an unknown word, listing the known ones.
@@ -140,6 +143,9 @@ def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> fl
         amount = default_word  # a move "by 0" is never what was asked: read it as "by the default amount"
     if isinstance(amount, str):
         key = amount.strip().lower()
+        numbers = NUMBER.findall(key)
+        if key not in AMOUNT_WORDS and len(numbers) == 1:
+            return float(numbers[0])  # 'at least 0.5', '0.2 m': the one number given
         if key not in AMOUNT_WORDS:
             words = ", ".join(sorted(w for w in AMOUNT_WORDS if w))
             raise ValueError(f"unknown amount {amount!r}; give a number or one of: {words}")

@@ -99,6 +99,15 @@ def test_repairs_are_bounded(simple_case: Case, sandbox: Sandbox) -> None:
     assert len(backend.queue) == 1
 
 
+def test_a_repair_the_backend_refuses_keeps_the_failure(simple_case: Case, sandbox: Sandbox) -> None:
+    broken = answer("1) a", "x = 1\n")
+    session, _ = make_session(simple_case, sandbox, broken)  # the repair request finds no answer left
+    session.draft()
+    result = session.approve()
+    assert not result.ok and result.attempts == 1 and result.error is not None
+    assert result.error.startswith("NameError") and "(no repair: EmptyCompletion:" in result.error
+
+
 def test_invalid_result_is_repaired(simple_case: Case, sandbox: Sandbox) -> None:
     nan_code = "t = get_trajectory()\nt[3, 1] = np.nan\nmodified_trajectory = t\n"
     session, backend = make_session(

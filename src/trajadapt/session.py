@@ -16,7 +16,7 @@ from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completio
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
 from trajadapt.constraints import Constraints, constraints_for, new_violations
-from trajadapt.errors import AnswerParseError, InvalidTrajectory, SessionStateError
+from trajadapt.errors import AnswerParseError, BackendError, InvalidTrajectory, SessionStateError
 from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
@@ -220,6 +220,8 @@ class AdaptationSession:
                 plan = self._ask("repair", outcome)
             except AnswerParseError as exc:
                 return self._result(plan, f"repair answer unreadable: {exc}", attempts)
+            except BackendError as exc:  # keep what failed; the repair itself could not be asked
+                return self._result(plan, f"{outcome} (no repair: {type(exc).__name__}: {exc})", attempts)
 
     @property
     def versions(self) -> list[Plan]:

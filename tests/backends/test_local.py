@@ -65,6 +65,20 @@ def test_json_schema_mode() -> None:
     assert fake.calls[0]["response_format"] == {"type": "json_object", "schema": ANSWER_SCHEMA}
 
 
+class OverflowingLlama(FakeLlama):
+    """Fails as llama-cpp-python 0.3.36 does when the prompt is longer than the context."""
+
+    def create_chat_completion(self, **arguments: Any) -> Iterator[dict[str, Any]]:
+        raise ValueError("Requested tokens (8532) exceed context window of 4096")
+
+
+def test_a_prompt_longer_than_the_context_is_a_backend_error() -> None:
+    from trajadapt.errors import BackendRejected
+
+    with pytest.raises(BackendRejected, match="-o n_ctx 8192"):
+        LocalBackend(LocalOptions(), llama=OverflowingLlama("")).complete(REQUEST)
+
+
 def test_empty_answer() -> None:
     with pytest.raises(EmptyCompletion):
         LocalBackend(LocalOptions(), llama=FakeLlama("")).complete(REQUEST)

@@ -15,7 +15,7 @@ from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion, PrepareProgress, Usage
 from trajadapt.backends.prompt_state import PromptStateCache
-from trajadapt.errors import BackendUnavailable, DependencyNotInstalled, EmptyCompletion
+from trajadapt.errors import BackendRejected, BackendUnavailable, DependencyNotInstalled, EmptyCompletion
 from trajadapt.model_file import MODEL_FILENAME, ensure_model
 from trajadapt.settings import default_home
 
@@ -187,12 +187,20 @@ class LocalBackend(Backend):
         started = time.perf_counter()
         first_token_s = 0.0
         chunks: list[str] = []
-        for chunk in llama.create_chat_completion(**arguments):
-            piece = chunk["choices"][0]["delta"].get("content") or ""
-            if piece and not chunks:
-                first_token_s = time.perf_counter() - started
-            if piece:
-                chunks.append(piece)
+        try:
+            for chunk in llama.create_chat_completion(**arguments):
+                piece = chunk["choices"][0]["delta"].get("content") or ""
+                if piece and not chunks:
+                    first_token_s = time.perf_counter() - started
+                if piece:
+                    chunks.append(piece)
+        except ValueError as exc:  # llama-cpp-python's only signal for a prompt longer than the context
+            if "context window" not in str(exc):
+                raise
+            raise BackendRejected(
+                f"the conversation is longer than the local model's context ({exc}); start a new session, "
+                "or give the model a larger context with -o n_ctx 8192"
+            ) from exc
         return chunks, first_token_s
 
 

@@ -94,6 +94,8 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--case", type=Path, default=DEFAULT_CASE)
     args = parser.parse_args()
+    if not args.case.is_file():
+        parser.error(f"case {args.case} not found; give one with --case FILE (default: ovita-dev's latte_10)")
     from trajadapt.model_file import ensure_model
     from trajadapt.settings import default_home
 

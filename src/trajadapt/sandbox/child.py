@@ -2,18 +2,20 @@
 
 This is the only module where generated code is executed. The host (``runner``) starts it as
 ``python -m trajadapt.sandbox.child``, inside bubblewrap where available, and talks JSON lines over
-stdin/stdout: one job in, one result out. For each job the worker forks; the child
-drops privileges, sets resource limits (CPU seconds, address space, file size, open files), installs
-the seccomp filter, runs the static check, then executes the code in the restricted namespace and
-writes its result to a pipe. The worker enforces the wall-clock limit and reports how a child died.
+stdin/stdout: one job in, one answer out. For each job the worker forks; the child applies the OS
+layers (``lockdown``: unprivileged user, resource limits, seccomp allow-list), runs the static check,
+then executes the code in the restricted namespace and writes its result to a pipe. The worker
+enforces the wall-clock limit, reads the child's result as untrusted (``protocol``), asks the kernel
+which layers the child really ran under, and reports how a child died.
 """
 
 from __future__ import annotations
 
 import ast
+import builtins
+import contextlib
 import json
 import os
-import resource
 import select
 import signal
 import sys
@@ -24,18 +26,25 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.sandbox import seccomp
+from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.api import RESULT_VARIABLE, build_api
 from trajadapt.sandbox.guard import check_code
+from trajadapt.sandbox.lockdown import RESULT_FD, ChildLimits, lock_down, verified_layers
+from trajadapt.sandbox.protocol import (
+    MAX_CHILD_BYTES,
+    MAX_WAYPOINTS,
+    ChildResult,
+    ProtocolError,
+    decode_json,
+    error_result,
+    read_child_result,
+    worker_answer_json,
+)
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
 from trajadapt.sandbox.rewrite import assign_discarded_results
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
 
 GENERATED_FILENAME = "<generated>"
-RESULT_FD = 3
-NOBODY_ID = 65534
-MAX_RESULT_BYTES = 32 * 1024 * 1024
-MAX_WAYPOINTS = 100_000
 # Names a small model invents for detect_objects (seen in the benchmark); in skills mode they work too.
 DETECT_ALIASES = ("find_object", "find_objects", "detect_object", "get_object", "get_object_position")
 
@@ -50,11 +59,16 @@ def main() -> None:
         if not line.strip():
             continue
         job = json.loads(line)
-        protocol_out.write(json.dumps(run_job_in_child(job, modules)) + "\n")
+        result, duration_s, layers = run_job_in_child(job, modules)
+        protocol_out.write(worker_answer_json(result, duration_s, layers) + "\n")
 
 
-def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
-    """Fork, run ``job`` in the child, and collect its result within the wall-clock limit."""
+def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> tuple[ChildResult, float, list[str]]:
+    """Fork, run ``job`` in the child, and collect its result within the wall-clock limit.
+
+    Returns:
+        The checked result, the seconds it took, and the layers the kernel shows for the child.
+    """
     read_fd, write_fd = os.pipe()
     started = time.perf_counter()
     pid = os.fork()
@@ -64,11 +78,12 @@ def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, 
     os.close(write_fd)
     payload, timed_out = _read_with_deadline(read_fd, started + float(job["wall_s"]))
     if timed_out:
-        os.kill(pid, signal.SIGKILL)
+        with contextlib.suppress(ProcessLookupError):
+            os.kill(pid, signal.SIGKILL)
+    layers = verified_layers(pid)  # before reaping: a zombie's status still shows its layers
     _, status = os.waitpid(pid, 0)
-    result = _decode(payload) or _death_report(status, timed_out, job)
-    result["duration_s"] = time.perf_counter() - started
-    return result
+    result = _decode(payload) if payload else _death_report(status, timed_out, job)
+    return result, time.perf_counter() - started, layers
 
 
 def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes, bool]:
@@ -86,48 +101,46 @@ def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes, bool]:
             if not chunk:
                 return b"".join(chunks), False
             size += len(chunk)
-            if size > MAX_RESULT_BYTES:
-                return b"", False
+            if size > MAX_CHILD_BYTES:
+                return b"x" * (MAX_CHILD_BYTES + 1), False
             chunks.append(chunk)
     finally:
         os.close(fd)
 
 
-def _decode(payload: bytes) -> dict[str, Any] | None:
+def _decode(payload: bytes) -> ChildResult:
     try:
-        result = json.loads(payload) if payload else None
-    except ValueError:
-        return None
-    return result if isinstance(result, dict) else None
+        return read_child_result(decode_json(payload, MAX_CHILD_BYTES))
+    except ProtocolError as exc:
+        return error_result("Crash", f"the code's process sent a malformed result ({exc}); it was discarded")
 
 
-def _death_report(status: int, timed_out: bool, job: dict[str, Any]) -> dict[str, Any]:
+def _death_report(status: int, timed_out: bool, job: dict[str, Any]) -> ChildResult:
     if timed_out:
-        message = f"the code did not finish within {job['wall_s']:g} s (wall clock) and was stopped"
-        return _error("Timeout", message)
+        return error_result(
+            "Timeout", f"the code did not finish within {job['wall_s']:g} s (wall clock) and was stopped"
+        )
     if os.WIFSIGNALED(status):
         number = os.WTERMSIG(status)
         if number == signal.SIGXCPU:
-            message = f"the code used more than {job['cpu_s']:g} s of CPU time and was stopped"
-            return _error("Timeout", message)
+            return error_result(
+                "Timeout", f"the code used more than {job['cpu_s']:g} s of CPU time and was stopped"
+            )
         name = signal.Signals(number).name
-        return _error("Crash", f"the code's process was killed by {name} (a resource limit?)")
-    return _error("Crash", "the code's process ended without a result (output too large?)")
-
-
-def _error(kind: str, message: str, line: int | None = None) -> dict[str, Any]:
-    return {"ok": False, "error": {"type": kind, "message": message, "line": line}}
+        return error_result(
+            "Crash", f"the code's process was killed by {name} (a resource limit or a refused system call)"
+        )
+    return error_result("Crash", "the code's process ended without a result")
 
 
 def _child(job: dict[str, Any], modules: dict[str, Any], write_fd: int) -> None:
     try:
-        layers = _lock_down(job, write_fd)
+        lock_down(ChildLimits(float(job["cpu_s"]), int(job["memory_mb"])), write_fd)
         result = execute(job, modules)
-        result["layers"] = layers
-        data = json.dumps(result).encode()
     except BaseException as exc:  # noqa: BLE001 - anything escaping must still end the child
-        data = json.dumps(_error("Crash", f"sandbox child failed: {exc!r}")).encode()
+        result = error_result("Crash", f"sandbox child failed: {exc!r}")
     try:
+        data = json.dumps(result.to_json()).encode()
         view = memoryview(data)
         while view:
             view = view[os.write(RESULT_FD, view) :]
@@ -135,58 +148,16 @@ def _child(job: dict[str, Any], modules: dict[str, Any], write_fd: int) -> None:
         os._exit(0)
 
 
-def _lock_down(job: dict[str, Any], write_fd: int) -> list[str]:
-    """Apply the OS layers in the child; return the names of the ones that took effect."""
-    layers = []
-    os.setsid()
-    null = os.open(os.devnull, os.O_RDWR)
-    for fd in (0, 1, 2):
-        os.dup2(null, fd)
-    os.dup2(write_fd, RESULT_FD)
-    os.closerange(RESULT_FD + 1, 1 << 16)
-    if _drop_privileges():
-        layers.append("unprivileged-user")
-    _set_limits(job)
-    layers.append("rlimits")
-    if seccomp.install_filter():
-        layers.append("seccomp")
-    return layers
+def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
+    """Check and run the job's code in the restricted namespace.
 
-
-def _drop_privileges() -> bool:
-    if os.geteuid() != 0:
-        return True
-    try:
-        os.setgroups([])
-        os.setgid(NOBODY_ID)
-        os.setuid(NOBODY_ID)
-    except OSError:
-        return False
-    return True
-
-
-def _set_limits(job: dict[str, Any]) -> None:
-    cpu_s = max(1, int(np.ceil(float(job["cpu_s"]))))
-    resource.setrlimit(resource.RLIMIT_CPU, (cpu_s, cpu_s + 1))
-    address_space = _current_address_space() + int(job["memory_mb"]) * 1024 * 1024
-    resource.setrlimit(resource.RLIMIT_AS, (address_space, address_space))
-    resource.setrlimit(resource.RLIMIT_FSIZE, (0, 0))
-    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-    resource.setrlimit(resource.RLIMIT_NOFILE, (RESULT_FD + 1, RESULT_FD + 1))
-    resource.setrlimit(resource.RLIMIT_NPROC, (0, 0))
-
-
-def _current_address_space() -> int:
-    with open("/proc/self/statm") as statm:
-        pages = int(statm.read().split()[0])
-    return pages * resource.getpagesize()
-
-
-def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
-    """Check and run the job's code in the restricted namespace; return a JSON-ready result."""
-    violation = check_code(job["code"])
+    With ``job["python_layers"]`` false the static check is skipped and the code gets the real
+    builtins and modules: only tests ask for that, to show that the OS layers hold on their own.
+    """
+    python_layers = job.get("python_layers", True)
+    violation = check_code(job["code"]) if python_layers else None
     if violation is not None:
-        return {**_error("Rejected", violation.message, violation.line), "stdout": ""}
+        return error_result("Rejected", violation.message, violation.line)
     output = BoundedOutput(int(job["max_output_chars"]))
     api, calls = build_api(job["trajectory"], job["objects"])
     tree = ast.parse(job["code"], GENERATED_FILENAME)
@@ -195,20 +166,18 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> dict[str, Any]:
         api.update(bind_skills(Axes.from_positive_x(job.get("positive_x", "left"))))
         api.update(dict.fromkeys(DETECT_ALIASES, api["detect_objects"]))
         notes += assign_discarded_results(tree, SKILL_NAMES)
-    namespace = _namespace(api, modules, output)
+    namespace = _namespace(api, modules, output) if python_layers else _unrestricted_namespace(api, output)
     try:
         exec(compile(tree, GENERATED_FILENAME, "exec"), namespace)  # noqa: S102
         rows = _result_rows(namespace, set(api), notes if job.get("accept_last") else None)
     except MemoryError:
-        result = _error("MemoryError", f"the code used more than {job['memory_mb']} MB of memory")
+        failed = error_result("MemoryError", f"the code used more than {job['memory_mb']} MB of memory")
     except BaseException as exc:  # noqa: BLE001 - every failure is reported to the host
-        message = "; ".join(part for part in (str(exc) or repr(exc), calls.hint()) if part)
-        result = _error(type(exc).__name__, message, _generated_line(exc))
+        message = "; ".join(part for part in (_describe(exc), calls.hint()) if part)
+        failed = error_result(_kind(exc), safe_text(message), _generated_line(exc))
     else:
-        result = {"ok": True, "trajectory": rows}
-    result["stdout"] = output.text()
-    result["notes"] = notes
-    return result
+        return ChildResult(True, rows, output.text(), None, notes)
+    return ChildResult(False, None, output.text(), failed.error, notes)
 
 
 def _namespace(
@@ -222,6 +191,15 @@ def _namespace(
         "math": modules["math"],
         **api,
     }
+
+
+def _unrestricted_namespace(api: dict[str, Callable[..., Any]], output: BoundedOutput) -> dict[str, Any]:
+    """What code that got past every Python layer would hold: the real builtins and modules.
+
+    Only ``print`` still goes to the bounded output, so a test can read what an attack saw.
+    """
+    real = {**vars(builtins), "print": output.print}
+    return {"__builtins__": real, "__name__": "generated", "np": np, "numpy": np, **api}
 
 
 def _result_rows(namespace: dict[str, Any], provided: set[str], notes: list[str] | None) -> list[list[float]]:
@@ -238,7 +216,7 @@ def _result_rows(namespace: dict[str, Any], provided: set[str], notes: list[str]
         array = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as exc:
         raise TypeError(f"'{RESULT_VARIABLE}' must be an (N, 4) array of numbers: {exc}") from None
-    if array.ndim != 2 or array.shape[0] > MAX_WAYPOINTS:
+    if array.ndim != 2 or array.shape[1] != 4 or array.shape[0] > MAX_WAYPOINTS:
         raise ValueError(
             f"'{RESULT_VARIABLE}' must be an (N, 4) array with at most {MAX_WAYPOINTS} rows, "
             f"got shape {array.shape}"
@@ -255,6 +233,18 @@ def _last_built_trajectory(namespace: dict[str, Any], provided: set[str], notes:
             notes.append(f"the code did not set '{RESULT_VARIABLE}'; used its variable '{name}' instead")
             return value
     return None
+
+
+def _kind(exc: BaseException) -> str:
+    name = type(exc).__name__
+    return name if name.isidentifier() and len(name) <= 100 else "Exception"
+
+
+def _describe(exc: BaseException) -> str:
+    try:
+        return safe_text(str(exc) or repr(exc))
+    except Exception:  # noqa: BLE001 - an exception whose text cannot be made is still reported
+        return f"{type(exc).__name__} (its message could not be read)"
 
 
 def _generated_line(exc: BaseException) -> int | None:

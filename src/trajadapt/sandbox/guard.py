@@ -3,13 +3,20 @@
 It refuses imports other than the allowed modules, any name or attribute that starts with an
 underscore (dunders, private members), frame and code attributes, file and module helpers of numpy,
 dynamic evaluation (eval, exec, getattr with built strings) and format strings that reach attributes.
-What passes still runs with restricted builtins, in a child process under resource limits.
+Every place the syntax names an attribute or binds a name is looked at: ``a.b``, ``match`` class
+patterns (``case C(__x__=v)``), capture names, keyword arguments, and format fields nested at any
+depth inside format specs (``'{0:{1.x}}'``).
+
+This layer is a convenience that gives the model a clear message; it is not the boundary. What passes
+still runs with restricted builtins, in a child process under an unprivileged user, resource limits and
+a seccomp allow-list that hold on their own (see ``lockdown`` and ``seccomp``).
 """
 
 from __future__ import annotations
 
 import ast
 import string
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 ALLOWED_MODULES = frozenset(
@@ -84,10 +91,30 @@ def _node_violation(node: ast.AST, literal_format_calls: set[int]) -> str | None
         return _attribute_violation(node.attr)
     if isinstance(node, ast.ClassDef):
         return "class definitions are not available in the sandbox; use functions"
-    if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.arg | ast.alias):
-        name = getattr(node, "name", None) or getattr(node, "arg", None) or ""
-        return _name_violation(str(name)) if name.startswith("_") else None
-    return None
+    if isinstance(node, ast.MatchClass):
+        return _first(_attribute_violation(attribute) for attribute in node.kwd_attrs)
+    return _first(_name_violation(name) for name in _bound_names(node) if name.startswith("_"))
+
+
+def _bound_names(node: ast.AST) -> list[str]:
+    """The names a node binds or passes by keyword: definitions, arguments, imports, captures."""
+    if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.MatchStar | ast.MatchAs):
+        return [node.name] if node.name else []
+    if isinstance(node, ast.arg):
+        return [node.arg]
+    if isinstance(node, ast.alias):
+        return [node.name, node.asname or ""]
+    if isinstance(node, ast.keyword):
+        return [node.arg] if node.arg else []
+    if isinstance(node, ast.MatchMapping):
+        return [node.rest] if node.rest else []
+    if isinstance(node, ast.Global | ast.Nonlocal):
+        return list(node.names)
+    return []
+
+
+def _first(messages: Iterable[str | None]) -> str | None:
+    return next((message for message in messages if message is not None), None)
 
 
 def _import_violation(node: ast.Import | ast.ImportFrom) -> str | None:
@@ -132,9 +159,22 @@ def _format_violation(attribute: ast.Attribute) -> str:
     if not isinstance(template, ast.Constant) or not isinstance(template.value, str):
         return "str.format may only be called on a literal string; use an f-string"
     try:
-        fields = [field for _, field, _, _ in string.Formatter().parse(template.value) if field]
-    except ValueError as exc:
+        fields = _format_fields(template.value)
+    except (ValueError, RecursionError) as exc:
         return f"bad format string: {exc}"
     if any("." in field or "[" in field for field in fields):
         return "format fields may not access attributes or items; use an f-string"
     return ""
+
+
+def _format_fields(template: str, depth: int = 0) -> list[str]:
+    """Every field name of a format template, including those nested in format specs."""
+    if depth > 2:  # str.format itself refuses deeper nesting ("Max string recursion exceeded")
+        raise ValueError("format specs nested too deep")
+    fields: list[str] = []
+    for _, field, spec, _ in string.Formatter().parse(template):
+        if field is not None:
+            fields.append(field)
+        if spec and "{" in spec:
+            fields += _format_fields(spec, depth + 1)
+    return fields

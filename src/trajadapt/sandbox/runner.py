@@ -5,7 +5,6 @@ from __future__ import annotations
 import contextlib
 import json
 import logging
-import os
 import shutil
 import subprocess
 import sys
@@ -16,17 +15,21 @@ from types import TracebackType
 from typing import IO, Any, Literal
 
 from trajadapt.errors import SandboxError
+from trajadapt.sandbox import seccomp
+from trajadapt.sandbox.bubblewrap import bwrap_command
+from trajadapt.sandbox.protocol import MAX_ANSWER_CHARS, ProtocolError, WorkerAnswer, read_worker_answer
 from trajadapt.scene import Scene
 from trajadapt.trajectory import Trajectory
 
 logger = logging.getLogger(__name__)
 
 Isolation = Literal["auto", "bwrap", "process"]
-BWRAP_ARGS = (
-    "--unshare-all", "--die-with-parent", "--new-session",
-    "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
-)  # fmt: skip
 WORKER_START_TIMEOUT_S = 30.0
+PROCESS_ONLY_WARNING = (
+    "the sandbox runs without bubblewrap: generated code is kept from files, sockets and processes by "
+    "the seccomp allow-list and the unprivileged user alone, and would see the host's file system if "
+    "those failed; install bubblewrap (apt install bubblewrap) for the outer layer"
+)
 
 
 @dataclass(frozen=True)
@@ -94,9 +97,24 @@ class Sandbox:
     is installed and works, else process).
     """
 
-    def __init__(self, limits: SandboxLimits | None = None, isolation: Isolation = "auto") -> None:
+    def __init__(
+        self,
+        limits: SandboxLimits | None = None,
+        isolation: Isolation = "auto",
+        *,
+        python_layers: bool = True,
+    ) -> None:
+        """Prepare a sandbox; the worker starts on the first run.
+
+        Args:
+            limits: CPU, wall-clock, memory and output limits for each run.
+            isolation: the outer layer (see the class docstring).
+            python_layers: False skips the static check and the restricted namespace. Only tests use
+                it, to show that the OS layers hold alone against code that got past them.
+        """
         self.limits = limits or SandboxLimits()
         self.isolation = isolation
+        self.python_layers = python_layers
         self._process: subprocess.Popen[str] | None = None
         self._lock = threading.Lock()
         self.outer_layer = ""
@@ -132,10 +150,20 @@ class Sandbox:
             "wall_s": self.limits.wall_s,
             "memory_mb": self.limits.memory_mb,
             "max_output_chars": self.limits.max_output_chars,
+            "python_layers": self.python_layers,
         }
         with self._lock:
-            answer = self._exchange(job)
-        return _to_result(answer, self.outer_layer)
+            try:
+                answer = self._exchange(job)
+            except ProtocolError as exc:
+                logger.warning("sandbox worker sent a malformed answer (%s); replacing it", exc)
+                self.close()
+                return _protocol_failure(exc)
+        return _to_result(answer, self._host_layers())
+
+    def _host_layers(self) -> tuple[str, ...]:
+        python = ("static-check", "restricted-namespace") if self.python_layers else ()
+        return (*python, self.outer_layer)
 
     def close(self) -> None:
         """Stop the worker process."""
@@ -151,19 +179,18 @@ class Sandbox:
         _close_quietly(process.stdout)
         _close_quietly(process.stderr)
 
-    def _exchange(self, job: dict[str, Any]) -> dict[str, Any]:
+    def _exchange(self, job: dict[str, Any]) -> WorkerAnswer:
         for attempt in range(2):
             process = self._ensure_worker()
             try:
                 assert process.stdin is not None and process.stdout is not None
                 process.stdin.write(json.dumps(job) + "\n")
                 process.stdin.flush()
-                line = process.stdout.readline()
-            except (BrokenPipeError, OSError):
+                line = process.stdout.readline(MAX_ANSWER_CHARS + 1)
+            except (BrokenPipeError, OSError, UnicodeDecodeError):
                 line = ""
             if line:
-                answer: dict[str, Any] = json.loads(line)
-                return answer
+                return read_worker_answer(line)
             logger.warning("sandbox worker died (attempt %d); restarting it", attempt + 1)
             self.close()
         raise SandboxError(
@@ -179,6 +206,10 @@ class Sandbox:
             process = _start(command)
             if _wait_ready(process):
                 self._process, self.outer_layer = process, layer
+                if layer == "process":
+                    logger.warning(PROCESS_ONLY_WARNING)
+                if not seccomp.supported():
+                    logger.warning("no seccomp filter on this platform: the sandbox's OS layers are weaker")
                 return process
             stderr = _drain(process)
             logger.warning("sandbox worker (%s) did not start: %s", layer, stderr.strip()[-500:])
@@ -194,17 +225,19 @@ class Sandbox:
             raise SandboxError("isolation='bwrap' but bubblewrap is not installed (apt install bubblewrap)")
         candidates = []
         if bwrap is not None and self.isolation in ("auto", "bwrap"):
-            candidates.append(([bwrap, *BWRAP_ARGS, "--", *worker], "bwrap"))
+            candidates.append((bwrap_command(bwrap, worker, PACKAGE_ROOT), "bwrap"))
         if self.isolation in ("auto", "process"):
             candidates.append((worker, "process"))
         return candidates
 
 
+PACKAGE_ROOT = Path(__file__).resolve().parents[2]
+
+
 def _worker_environment() -> dict[str, str]:
-    package_root = str(Path(__file__).resolve().parents[2])
     return {
-        "PATH": os.environ.get("PATH", "/usr/bin:/bin"),
-        "PYTHONPATH": package_root,
+        "PATH": "/usr/bin:/bin",
+        "PYTHONPATH": str(PACKAGE_ROOT),
         "OPENBLAS_NUM_THREADS": "1",
         "OMP_NUM_THREADS": "1",
         "MKL_NUM_THREADS": "1",
@@ -260,14 +293,19 @@ def _close_quietly(stream: IO[str] | None) -> None:
             stream.close()
 
 
-def _to_result(answer: dict[str, Any], outer_layer: str) -> SandboxResult:
-    error = answer.get("error")
-    layers = tuple(answer.get("layers", ())) + ((outer_layer,) if outer_layer else ())
+def _to_result(answer: WorkerAnswer, host_layers: tuple[str, ...]) -> SandboxResult:
+    result = answer.result
+    error = result.error
     return SandboxResult(
-        rows=answer.get("trajectory") if answer.get("ok") else None,
-        stdout=str(answer.get("stdout", "")),
-        error=CodeError(error["type"], error["message"], error.get("line")) if error else None,
-        duration_s=float(answer.get("duration_s", 0.0)),
-        layers=layers,
-        notes=tuple(answer.get("notes", ())),
+        rows=result.rows if result.ok else None,
+        stdout=result.stdout,
+        error=CodeError(error["type"], error["message"], error["line"]) if error else None,
+        duration_s=answer.duration_s,
+        layers=(*host_layers, *answer.layers),
+        notes=tuple(result.notes),
     )
+
+
+def _protocol_failure(exc: ProtocolError) -> SandboxResult:
+    message = f"the sandbox worker sent a malformed answer ({exc}); it was replaced and the result discarded"
+    return SandboxResult(None, "", CodeError("SandboxProtocol", message), 0.0)

@@ -8,13 +8,16 @@ import pytest
 
 from tests.conftest import line_trajectory
 from tests.sandbox.hostile_snippets import HOSTILE_SNIPPETS, MARKER
+from tests.sandbox.os_attacks import OS_ATTACKS
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.scene import Scene
 
 
 def test_corpus_is_large_enough() -> None:
-    assert len(HOSTILE_SNIPPETS) >= 25
+    assert len(HOSTILE_SNIPPETS) >= 100
+    assert len(OS_ATTACKS) >= 50
     assert len({name for name, _ in HOSTILE_SNIPPETS}) == len(HOSTILE_SNIPPETS)
+    assert len({name for name, _ in OS_ATTACKS}) == len(OS_ATTACKS)
 
 
 @pytest.mark.parametrize(("name", "code"), HOSTILE_SNIPPETS, ids=[n for n, _ in HOSTILE_SNIPPETS])
@@ -26,6 +29,14 @@ def test_hostile_snippet_is_blocked(sandbox: Sandbox, name: str, code: str) -> N
     assert result.error is not None and result.error.message
     assert not os.path.exists(MARKER), f"{name} wrote a file"
     assert len(result.stdout) <= sandbox.limits.max_output_chars + 100
+
+
+@pytest.mark.parametrize(("name", "template"), OS_ATTACKS, ids=[n for n, _ in OS_ATTACKS])
+def test_os_attack_is_refused_by_the_python_layers_too(sandbox: Sandbox, name: str, template: str) -> None:
+    paths = {"secret": "/etc/shadow", "secret_text": "", "victim": MARKER + ".victim", "marker": MARKER}
+    result = sandbox.run(template.format(**paths), line_trajectory(), Scene())
+    assert not result.ok, f"{name} ran to a result: {result}"
+    assert not os.path.exists(MARKER), f"{name} wrote a file"
 
 
 def test_worker_survives_the_corpus(sandbox: Sandbox) -> None:

@@ -123,6 +123,9 @@ def _import_violation(node: ast.Import | ast.ImportFrom) -> str | None:
             return "relative imports are not allowed"
         if any(alias.name == "*" for alias in node.names):
             return f"'from {node.module} import *' is not allowed; import the names you use"
+        imported = _first(_attribute_violation(alias.name) for alias in node.names)
+        if imported is not None:  # 'from numpy import save' reads an attribute of the module
+            return imported
         modules = [node.module or ""]
     else:
         modules = [alias.name for alias in node.names]

@@ -25,6 +25,7 @@ logger = logging.getLogger(__name__)
 
 Isolation = Literal["auto", "bwrap", "process"]
 WORKER_START_TIMEOUT_S = 30.0
+WORKER_GRACE_S = 10.0
 PROCESS_ONLY_WARNING = (
     "the sandbox runs without bubblewrap: generated code is kept from files, sockets and processes by "
     "the seccomp allow-list and the unprivileged user alone, and would see the host's file system if "
@@ -182,6 +183,9 @@ class Sandbox:
     def _exchange(self, job: dict[str, Any]) -> WorkerAnswer:
         for attempt in range(2):
             process = self._ensure_worker()
+            # a worker that does not answer well after the child's own limit is stopped
+            watchdog = threading.Timer(float(job["wall_s"]) + WORKER_GRACE_S, process.kill)
+            watchdog.start()
             try:
                 assert process.stdin is not None and process.stdout is not None
                 process.stdin.write(json.dumps(job) + "\n")
@@ -189,12 +193,14 @@ class Sandbox:
                 line = process.stdout.readline(MAX_ANSWER_CHARS + 1)
             except (BrokenPipeError, OSError, UnicodeDecodeError):
                 line = ""
+            finally:
+                watchdog.cancel()
             if line:
                 return read_worker_answer(line)
             logger.warning("sandbox worker died (attempt %d); restarting it", attempt + 1)
             self.close()
         raise SandboxError(
-            "the sandbox worker keeps dying; check that 'bwrap --unshare-all true' works, or run "
+            "the sandbox worker keeps dying or stopped answering; check that 'bwrap --unshare-all true' works, or run "
             "without bubblewrap: TRAJADAPT_ISOLATION=process"
         )
 

@@ -9,13 +9,13 @@ import textwrap
 import pytest
 
 from tests.conftest import line_trajectory
+from trajadapt.errors import SandboxError
 from trajadapt.sandbox.protocol import (
     ProtocolError,
     decode_json,
     read_child_result,
     read_worker_answer,
 )
-from trajadapt.errors import SandboxError
 from trajadapt.sandbox.runner import Sandbox, SandboxLimits
 from trajadapt.scene import Scene
 

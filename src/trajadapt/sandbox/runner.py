@@ -200,8 +200,8 @@ class Sandbox:
             logger.warning("sandbox worker died (attempt %d); restarting it", attempt + 1)
             self.close()
         raise SandboxError(
-            "the sandbox worker keeps dying or stopped answering; check that 'bwrap --unshare-all true' works, or run "
-            "without bubblewrap: TRAJADAPT_ISOLATION=process"
+            "the sandbox worker keeps dying or stopped answering; check that 'bwrap --unshare-all true' "
+            "works, or run without bubblewrap: TRAJADAPT_ISOLATION=process"
         )
 
     def _ensure_worker(self) -> subprocess.Popen[str]:

@@ -7,8 +7,11 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.errors import InputError
+from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
 from trajadapt.scene import Scene, parse_objects, parse_text_field
 from trajadapt.trajectory import Trajectory, load_trajectory_file, read_json_file
+
+DESCRIPTION_CHARS = 50_000
 
 
 @dataclass(frozen=True)
@@ -23,7 +26,7 @@ class Case:
 
     def with_instruction(self, instruction: str) -> Case:
         """Return a copy of this case with another instruction."""
-        return replace(self, instruction=instruction.strip())
+        return replace(self, instruction=safe_text(instruction.strip(), INSTRUCTION_CHARS))
 
     def to_dict(self) -> dict[str, Any]:
         """Return the OVITA case-file form of this case."""
@@ -61,8 +64,8 @@ def scene_from_dict(data: dict[str, Any], where: str) -> Scene:
     """Read the scene fields (objects, Env_descp, constraints) of a case or scene file."""
     return Scene(
         objects=parse_objects(data.get("objects"), f"{where}: objects"),
-        description=parse_text_field(data.get("Env_descp"), f"{where}: Env_descp"),
-        constraints=parse_text_field(data.get("constraints"), f"{where}: constraints"),
+        description=parse_text_field(data.get("Env_descp"), f"{where}: Env_descp", DESCRIPTION_CHARS),
+        constraints=parse_text_field(data.get("constraints"), f"{where}: constraints", DESCRIPTION_CHARS),
     )
 
 
@@ -88,4 +91,5 @@ def load_case_from_parts(trajectory_path: Path, scene_path: Path | None, instruc
     """Build a case from a trajectory file (JSON or CSV) and an optional scene file."""
     scene = load_scene(scene_path) if scene_path is not None else Scene()
     trajectory = load_trajectory_file(trajectory_path)
-    return Case(trajectory_path.stem, trajectory, scene, instruction.strip(), trajectory_path)
+    instruction = safe_text(instruction.strip(), INSTRUCTION_CHARS)
+    return Case(trajectory_path.stem, trajectory, scene, instruction, trajectory_path)

@@ -25,6 +25,7 @@ from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.results import sibling_file, write_json_atomic
+from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
@@ -247,10 +248,15 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
     click.echo(f"Result written to {out} (status {result.status})")
     if not result.ok:
         return
-    plot_comparison(
-        result.case.trajectory, result.trajectory, result.case.scene, plot_file,
-        AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,
-    )  # fmt: skip
+    try:
+        plot_comparison(
+            result.case.trajectory, result.trajectory, result.case.scene, plot_file,
+            AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,
+        )  # fmt: skip
+    except Exception as exc:  # noqa: BLE001 - a picture that cannot be drawn must not fail a written result
+        click.echo(f"Warning: the plot could not be drawn ({type(exc).__name__}: {safe_text(exc, 300)}); "
+                   "the result file is complete", err=True)  # fmt: skip
+        return
     click.echo(f"Plot written to {plot_file}")
 
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from trajadapt.errors import AnswerParseError
+from trajadapt.safe_text import ANSWER_CHARS, MESSAGE_CHARS, safe_text
 
 PLAN_KEYS = ("high_level_plan", "high-level plan", "high level plan", "plan", "hlp")
 CODE_KEYS = ("python_code", "python code", "code", "python")
@@ -43,13 +44,22 @@ def parse_answer(text: str) -> Plan:
     if record is not None:
         plan_value, code_value = _pick(record, PLAN_KEYS), _pick(record, CODE_KEYS)
         if isinstance(code_value, str) and code_value.strip():
-            return Plan(_steps(plan_value), _clean_code(code_value), text)
+            return _safe_plan(_steps(plan_value), _clean_code(code_value), text)
     fenced = _fenced_python(text)
     if fenced is not None:
         before = text[: text.find(fenced[0])]
         plan_value = _pick(record, PLAN_KEYS) if record else before
-        return Plan(_steps(plan_value), _clean_code(fenced[1]), text)
-    raise AnswerParseError(_no_code_message(text, record))
+        return _safe_plan(_steps(plan_value), _clean_code(fenced[1]), text)
+    raise AnswerParseError(safe_text(_no_code_message(text, record)))
+
+
+def _safe_plan(steps: tuple[str, ...], code: str, text: str) -> Plan:
+    """A plan whose texts are safe to show, log and store (JSON escapes can hide lone surrogates)."""
+    return Plan(
+        tuple(safe_text(step, MESSAGE_CHARS) for step in steps),
+        safe_text(code, ANSWER_CHARS),
+        safe_text(text, ANSWER_CHARS),
+    )
 
 
 def _no_code_message(text: str, record: dict[str, Any] | None) -> str:

@@ -8,6 +8,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from trajadapt.errors import InputError
+from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
+
+NAME_CHARS = 200
 
 
 @dataclass(frozen=True)
@@ -83,11 +86,12 @@ def parse_objects(raw: Any, where: str) -> tuple[SceneObject, ...]:
 def _parse_object(item: Any, where: str) -> SceneObject:
     if not isinstance(item, dict):
         raise InputError(f"{where}: expected an object {{name, x, y, z}}, got {type(item).__name__}")
-    name = item.get("name")
-    if not isinstance(name, str) or not name.strip():
-        raise InputError(f"{where}: 'name' must be a non-empty string, got {name!r}")
+    raw_name = item.get("name")
+    if not isinstance(raw_name, str) or not raw_name.strip():
+        raise InputError(f"{where}: 'name' must be a non-empty string, got {safe_text(repr(raw_name), 80)}")
+    name = safe_text(raw_name.strip(), NAME_CHARS)
     x, y, z = (_finite_number(item.get(axis), f"{where} ({name}): {axis}") for axis in "xyz")
-    return SceneObject(name.strip(), x, y, z, dimensions=_parse_dimensions(item, where))
+    return SceneObject(name, x, y, z, dimensions=_parse_dimensions(item, where))
 
 
 def _parse_dimensions(item: dict[str, Any], where: str) -> tuple[float, float, float] | None:
@@ -95,21 +99,27 @@ def _parse_dimensions(item: dict[str, Any], where: str) -> tuple[float, float, f
     if raw is None:
         return None
     if not isinstance(raw, Sequence) or isinstance(raw, str) or len(raw) != 3:
-        raise InputError(f"{where}: 'dimensions' must be [width, depth, height], got {raw!r}")
+        raise InputError(
+            f"{where}: 'dimensions' must be [width, depth, height], got {safe_text(repr(raw), 80)}"
+        )
     width, depth, height = (_finite_number(value, f"{where}: dimensions") for value in raw)
     return (width, depth, height)
 
 
 def _finite_number(value: Any, where: str) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float):
-        raise InputError(f"{where} must be a number, got {value!r}")
-    if not math.isfinite(value):
+        raise InputError(f"{where} must be a number, got {safe_text(repr(value), 80)}")
+    try:
+        number = float(value)
+    except OverflowError:
+        raise InputError(f"{where} is too large for a number") from None
+    if not math.isfinite(number):
         raise InputError(f"{where} must be finite, got {value!r}")
-    return float(value)
+    return number
 
 
-def parse_text_field(raw: Any, where: str) -> str:
-    """Return an optional free-text field as a stripped string ('' when absent).
+def parse_text_field(raw: Any, where: str, limit: int = INSTRUCTION_CHARS) -> str:
+    """Return an optional free-text field as a stripped, safe string ('' when absent), cut to ``limit``.
 
     Raises:
         InputError: the field is present but not a string.
@@ -118,4 +128,4 @@ def parse_text_field(raw: Any, where: str) -> str:
         return ""
     if not isinstance(raw, str):
         raise InputError(f"{where}: expected text, got {type(raw).__name__}")
-    return raw.strip()
+    return safe_text(raw.strip(), limit)

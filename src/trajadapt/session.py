@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
@@ -20,6 +20,7 @@ from trajadapt.errors import AnswerParseError, BackendError, InvalidTrajectory, 
 from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
+from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.store import Store
@@ -191,6 +192,7 @@ class AdaptationSession:
     def feedback(self, text: str) -> Plan:
         """Send the user's feedback with the original instruction and previous plan; get a new plan."""
         previous = self._require_plan()
+        text = safe_text(text, INSTRUCTION_CHARS)
         if not text.strip():
             raise SessionStateError("feedback is empty; say what should change in the plan")
         self.messages.append(ChatMessage("user", render(
@@ -284,6 +286,7 @@ class AdaptationSession:
         )
         started = time.perf_counter()
         completion = self.backend.complete(request)
+        completion = replace(completion, text=safe_text(completion.text, ANSWER_CHARS))
         self._llm_s += time.perf_counter() - started
         self._tokens["prompt"] += completion.usage.prompt_tokens or 0
         self._tokens["completion"] += completion.usage.completion_tokens or 0

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sqlite3
+import threading
 import time
 import uuid
 from collections.abc import Iterator
@@ -11,6 +12,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from trajadapt.safe_text import ANSWER_CHARS, safe_optional, safe_text
 
 MIGRATIONS = (
     """
@@ -63,18 +66,31 @@ class ExchangeRecord:
 
 
 class Store:
-    """A SQLite log; each write is committed at once so a crash loses nothing already said."""
+    """A SQLite log; each write is committed at once so a crash loses nothing already said.
+
+    One connection serves every thread (the review page logs from many), behind a lock: each write is
+    one transaction, and readers never see a half-written one. The file is in WAL mode, so another
+    process (``trajadapt logs``) can read while a server writes, and waits up to
+    ``BUSY_TIMEOUT_S`` for a lock held by another process instead of failing. Every text is made safe
+    first (a lone surrogate cannot be stored as UTF-8), and an exchange must name a logged session.
+    """
+
+    BUSY_TIMEOUT_S = 30.0
 
     def __init__(self, path: Path) -> None:
         self.path = path
         path.parent.mkdir(parents=True, exist_ok=True)
-        self._connection = sqlite3.connect(path, check_same_thread=False)
+        self._lock = threading.RLock()
+        self._connection = sqlite3.connect(path, check_same_thread=False, timeout=self.BUSY_TIMEOUT_S)
         self._connection.row_factory = sqlite3.Row
+        self._connection.execute("PRAGMA journal_mode=WAL")
+        self._connection.execute("PRAGMA foreign_keys=ON")
         self._migrate()
 
     def close(self) -> None:
         """Close the database."""
-        self._connection.close()
+        with self._lock:
+            self._connection.close()
 
     def _migrate(self) -> None:
         with self._transaction() as cursor:
@@ -85,15 +101,20 @@ class Store:
 
     @contextmanager
     def _transaction(self) -> Iterator[sqlite3.Cursor]:
-        cursor = self._connection.cursor()
-        try:
-            yield cursor
-            self._connection.commit()
-        except BaseException:
-            self._connection.rollback()
-            raise
-        finally:
-            cursor.close()
+        with self._lock:
+            cursor = self._connection.cursor()
+            try:
+                yield cursor
+                self._connection.commit()
+            except BaseException:
+                self._connection.rollback()
+                raise
+            finally:
+                cursor.close()
+
+    def _read(self, query: str, parameters: tuple[Any, ...]) -> list[sqlite3.Row]:
+        with self._lock:
+            return self._connection.execute(query, parameters).fetchall()
 
     def start_session(self, fields: dict[str, Any]) -> str:
         """Record a new session; returns its id."""
@@ -102,9 +123,9 @@ class Store:
             cursor.execute(
                 "INSERT INTO sessions (id, created, case_name, case_source, instruction, backend, "
                 "model, case_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
-                (session_id, time.time(), fields.get("case_name"), fields.get("case_source"),
-                 fields.get("instruction"), fields.get("backend"), fields.get("model"),
-                 json.dumps(fields.get("case"))),
+                (session_id, time.time(), _text(fields.get("case_name")), _text(fields.get("case_source")),
+                 _text(fields.get("instruction")), _text(fields.get("backend")), _text(fields.get("model")),
+                 _json(fields.get("case"))),
             )  # fmt: skip
         return session_id
 
@@ -115,10 +136,10 @@ class Store:
                 "INSERT INTO exchanges (session_id, created, kind, user_text, request_json, "
                 "answer, plan, code, outcome_json, error, timings_json) "
                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (session_id, time.time(), kind, fields.get("user_text"),
-                 json.dumps(fields.get("request")), fields.get("answer"), fields.get("plan"),
-                 fields.get("code"), json.dumps(fields.get("outcome")), fields.get("error"),
-                 json.dumps(fields.get("timings"))),
+                (session_id, time.time(), kind, _text(fields.get("user_text")),
+                 _json(fields.get("request")), _text(fields.get("answer")), _text(fields.get("plan")),
+                 _text(fields.get("code")), _json(fields.get("outcome")), _text(fields.get("error")),
+                 _json(fields.get("timings"))),
             )  # fmt: skip
             return int(cursor.lastrowid or 0)
 
@@ -133,31 +154,50 @@ class Store:
             query += "WHERE e.session_id LIKE ? "
             parameters = (session_id + "%",)
         query += "ORDER BY e.id DESC LIMIT ?"
-        rows = self._connection.execute(query, (*parameters, limit)).fetchall()
+        rows = self._read(query, (*parameters, limit))
         return [_record(row) for row in reversed(rows)]
 
     def recent_sessions(self, limit: int = 50) -> list[dict[str, Any]]:
         """The latest sessions, newest first: id, created, case name, instruction, backend, model."""
-        rows = self._connection.execute(
+        rows = self._read(
             "SELECT id, created, case_name, instruction, backend, model FROM sessions "
             "ORDER BY created DESC LIMIT ?",
             (limit,),
-        ).fetchall()
+        )
         return [dict(row) for row in rows]
 
     def session_case(self, session_id: str) -> Any:
         """The case a session worked on (OVITA form), or None for an unknown id."""
-        row = self._connection.execute(
-            "SELECT case_json FROM sessions WHERE id = ?", (session_id,)
-        ).fetchone()
-        return None if row is None else json.loads(row[0])
+        rows = self._read("SELECT case_json FROM sessions WHERE id = ?", (session_id,))
+        return None if not rows else json.loads(rows[0][0])
 
     def request_of(self, exchange_id: int) -> Any:
         """The full request (messages) and answer of one exchange."""
-        row = self._connection.execute(
-            "SELECT request_json, answer FROM exchanges WHERE id = ?", (exchange_id,)
-        ).fetchone()
-        return None if row is None else {"request": json.loads(row[0]), "answer": row[1]}
+        rows = self._read("SELECT request_json, answer FROM exchanges WHERE id = ?", (exchange_id,))
+        return None if not rows else {"request": json.loads(rows[0][0]), "answer": rows[0][1]}
+
+    def integrity_check(self) -> str:
+        """SQLite's own check of the file: 'ok' when it is sound."""
+        return str(self._read("PRAGMA integrity_check", ())[0][0])
+
+
+def _text(value: Any) -> str | None:
+    return safe_optional(value, ANSWER_CHARS)
+
+
+def _json(value: Any) -> str:
+    """JSON of ``value`` with every string in it made safe, so it stores and reads back cleanly."""
+    return json.dumps(_clean(value), default=lambda other: safe_text(other, ANSWER_CHARS))
+
+
+def _clean(value: Any) -> Any:
+    if isinstance(value, str):
+        return safe_text(value, ANSWER_CHARS)
+    if isinstance(value, dict):
+        return {safe_text(key): _clean(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return [_clean(item) for item in value]
+    return value
 
 
 def _record(row: sqlite3.Row) -> ExchangeRecord:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import stat
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -14,9 +15,13 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.errors import InputError
+from trajadapt.safe_text import safe_text
 
 COLUMNS = ("x", "y", "z", "v")
 MIN_WAYPOINTS = 2
+MAX_WAYPOINTS = 100_000
+MAX_FILE_BYTES = 64 * 1024 * 1024
+"""Largest case, scene or trajectory file read (100,000 waypoints as JSON take about 8 MB)."""
 
 
 def validate_waypoints(rows: Any, where: str) -> npt.NDArray[np.float64]:
@@ -34,6 +39,8 @@ def validate_waypoints(rows: Any, where: str) -> npt.NDArray[np.float64]:
     """
     if not isinstance(rows, Sequence | np.ndarray) or isinstance(rows, str | bytes):
         raise InputError(f"{where}: expected a list of [x, y, z, v] waypoints, got {_kind(rows)}")
+    if len(rows) > MAX_WAYPOINTS:
+        raise InputError(f"{where}: at most {MAX_WAYPOINTS} waypoints, got {len(rows)}; resample it first")
     if len(rows) < MIN_WAYPOINTS:
         raise InputError(f"{where}: a trajectory needs at least {MIN_WAYPOINTS} waypoints, got {len(rows)}")
     array = np.empty((len(rows), 4), dtype=np.float64)
@@ -57,11 +64,30 @@ def _validate_row(row: Any, where: str) -> list[float]:
     values = []
     for name, value in zip(COLUMNS, row, strict=True):
         if isinstance(value, bool) or not isinstance(value, int | float | np.number):
-            raise InputError(f"{where}: {name} must be a number, got {value!r}")
-        if not math.isfinite(float(value)):
-            raise InputError(f"{where}: {name} must be finite, got {value!r}")
-        values.append(float(value))
+            raise InputError(f"{where}: {name} must be a number, got {_short(value)}")
+        values.append(finite_float(value, f"{where}: {name}"))
     return values
+
+
+def finite_float(value: Any, where: str) -> float:
+    """``value`` as a finite float.
+
+    Raises:
+        InputError: the number is NaN, infinite, or too large for a float (an integer of 400 digits).
+    """
+    try:
+        number = float(value)
+    except OverflowError:
+        raise InputError(f"{where} is too large for a number ({len(str(value))} digits)") from None
+    if not math.isfinite(number):
+        raise InputError(f"{where} must be finite, got {_short(value)}")
+    return number
+
+
+def _short(value: Any, limit: int = 60) -> str:
+    """A value's repr for an error message, cut to ``limit`` characters and made safe."""
+    text = repr(value)
+    return safe_text(text[:limit] + ("..." if len(text) > limit else ""))
 
 
 def _kind(value: Any) -> str:
@@ -138,37 +164,82 @@ def load_trajectory_file(path: Path) -> Trajectory:
 
 def _read_csv_rows(path: Path) -> list[list[float]]:
     text = read_text_file(path)
-    reader = csv.DictReader(text.splitlines())
-    header = [name.strip().lower() for name in reader.fieldnames or []]
+    reader = csv.DictReader(text.splitlines(), restkey=EXTRA_FIELDS)
+    header = [(name or "").strip().lower() for name in reader.fieldnames or []]
     missing = [name for name in COLUMNS if name not in header]
     if missing:
         raise InputError(f"{path}: CSV header must name the columns x, y, z, v; missing {', '.join(missing)}")
     rows = []
-    for line_number, record in enumerate(reader, start=2):
-        cleaned = {(key or "").strip().lower(): (value or "").strip() for key, value in record.items()}
-        try:
-            rows.append([float(cleaned[name]) for name in COLUMNS])
-        except ValueError as exc:
-            raise InputError(f"{path}, line {line_number}: {exc}") from exc
+    try:
+        for record in reader:
+            rows.append(_csv_row(record, f"{path}, line {reader.line_num}"))
+    except csv.Error as exc:
+        raise InputError(f"{path}, line {reader.line_num}: not valid CSV ({exc})") from None
     return rows
 
 
-def read_text_file(path: Path) -> str:
-    """Read a UTF-8 text file, turning OS errors into an InputError that names the file."""
+EXTRA_FIELDS = "\x00extra"
+
+
+def _csv_row(record: dict[str, Any], where: str) -> list[float]:
+    if record.get(EXTRA_FIELDS):
+        raise InputError(f"{where}: more fields than the header names")
+    cleaned = {(key or "").strip().lower(): (value or "").strip() for key, value in record.items()}
+    values = []
+    for name in COLUMNS:
+        try:
+            values.append(float(cleaned[name]))
+        except ValueError:
+            raise InputError(f"{where}: {name} must be a number, got {_short(cleaned[name])}") from None
+    return values
+
+
+def read_text_file(path: Path, limit: int = MAX_FILE_BYTES) -> str:
+    """Read a UTF-8 text file of at most ``limit`` bytes.
+
+    Only regular files are read (a FIFO would block, a device never end), and the size is checked
+    before reading.
+
+    Raises:
+        InputError: naming the file: missing, not a regular file, too large, unreadable or not UTF-8.
+    """
     try:
-        return path.read_text(encoding="utf-8")
-    except FileNotFoundError as exc:
-        raise InputError(f"{path}: file not found") from exc
-    except IsADirectoryError as exc:
-        raise InputError(f"{path}: is a directory, expected a file") from exc
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{path}: cannot be read ({exc})") from exc
+        info = path.stat()
+    except FileNotFoundError:
+        raise InputError(f"{path}: file not found") from None
+    except (OSError, ValueError) as exc:
+        raise InputError(f"{path}: cannot be read ({exc})") from None
+    if stat.S_ISDIR(info.st_mode):
+        raise InputError(f"{path}: is a directory, expected a file")
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError(f"{path}: not a regular file (a device, pipe or socket); give a file")
+    if info.st_size > limit:
+        raise InputError(f"{path}: {info.st_size / 1e6:.1f} MB is over the {limit / 1e6:.0f} MB limit")
+    try:
+        with path.open("rb") as handle:
+            data = handle.read(limit + 1)
+    except OSError as exc:
+        raise InputError(f"{path}: cannot be read ({exc})") from None
+    if len(data) > limit:
+        raise InputError(f"{path}: over the {limit / 1e6:.0f} MB limit")
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
 
 
 def read_json_file(path: Path) -> Any:
     """Parse a JSON file, turning every failure into an InputError that names the file."""
-    text = read_text_file(path)
+    return parse_json_text(read_text_file(path), str(path))
+
+
+def parse_json_text(text: str, where: str) -> Any:
+    """Parse JSON text from outside; malformed, over-long numbers and over-deep input are InputErrors."""
     try:
         return json.loads(text)
     except json.JSONDecodeError as exc:
-        raise InputError(f"{path}: not valid JSON ({exc.msg} at line {exc.lineno})") from exc
+        raise InputError(f"{where}: not valid JSON ({exc.msg} at line {exc.lineno})") from None
+    except RecursionError:
+        raise InputError(f"{where}: JSON nested too deep") from None
+    except ValueError as exc:  # an integer of more than 4300 digits
+        raise InputError(f"{where}: not valid JSON ({safe_text(str(exc))})") from None

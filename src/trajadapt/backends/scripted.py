@@ -10,7 +10,8 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion
-from trajadapt.errors import BackendOptionError, EmptyCompletion
+from trajadapt.errors import BackendOptionError, EmptyCompletion, InputError
+from trajadapt.trajectory import read_json_file
 
 
 @dataclass(frozen=True)
@@ -71,9 +72,9 @@ def load_answers(path: Path) -> list[str]:
         BackendOptionError: the file is missing or has no list of answers.
     """
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise BackendOptionError(f"scripted answers file {path}: cannot be read ({exc})") from exc
+        data = read_json_file(path)
+    except InputError as exc:
+        raise BackendOptionError(f"scripted answers file: {exc}") from exc
     answers = data.get("answers") if isinstance(data, dict) else data
     if not isinstance(answers, list) or not answers:
         raise BackendOptionError(

@@ -12,6 +12,7 @@ from trajadapt.scene import Scene, parse_objects, parse_text_field
 from trajadapt.trajectory import Trajectory, load_trajectory_file, read_json_file
 
 DESCRIPTION_CHARS = 50_000
+NAME_CHARS = 200
 
 
 @dataclass(frozen=True)
@@ -53,7 +54,7 @@ def case_from_dict(data: Any, where: str, name: str = "case") -> Case:
     if "trajectory" not in data:
         raise InputError(f"{where}: no 'trajectory' field (expected [[x, y, z, v], ...])")
     return Case(
-        name=name,
+        name=safe_text(name, NAME_CHARS),
         trajectory=Trajectory.from_rows(data["trajectory"], f"{where}: trajectory"),
         scene=scene_from_dict(data, where),
         instruction=parse_text_field(data.get("instruction"), f"{where}: instruction"),

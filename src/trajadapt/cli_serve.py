@@ -31,6 +31,9 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
               help="Folder of case files the page can pick from.")  # fmt: skip
 @click.option("--allow-remote", is_flag=True, help="Allow binding to a non-loopback address (needs a token).")
 @click.option("--token", default=None, help=f"Access token (default: ${TOKEN_ENV}, or a new random one).")
+@click.option("--allowed-host", "allowed_hosts", multiple=True, metavar="NAME",
+              help="Another host name the page may be opened under (e.g. the machine's DNS name with "
+                   "--allow-remote); loopback names and the bound address are always allowed.")  # fmt: skip
 @backend_option
 @option_option
 @click.option("--model-path", type=click.Path(dir_okay=False, path_type=Path), default=None,
@@ -38,16 +41,19 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
 @click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
 def serve(
-    host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None, backend: str | None,
-    options: tuple[tuple[str, str], ...], model_path: Path | None, mode: str | None, axes: str | None,
+    host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None,
+    allowed_hosts: tuple[str, ...], backend: str | None, options: tuple[tuple[str, str], ...],
+    model_path: Path | None, mode: str | None, axes: str | None,
 ) -> None:  # fmt: skip
     """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
 
     Sessions are logged to the same SQLite log as 'adapt', so a restarted server lists earlier ones.
     Binds to 127.0.0.1; another address needs --allow-remote, and then every request needs the token.
+    The server answers only to loopback names, the bound address and --allowed-host names (a guard
+    against DNS rebinding), and reads no request body over 8 MB.
     """
     token = _access_token(host, allow_remote, token)
-    app = _build_app(cases_dir, backend, options, model_path, mode, axes, token)
+    app = _build_app(cases_dir, backend, options, model_path, mode, axes, token, (host, *allowed_hosts))
     import uvicorn
 
     query = f"/?token={token}" if token else "/"
@@ -83,6 +89,7 @@ def _build_app(
     mode: str | None,
     axes: str | None,
     token: str | None,
+    allowed_hosts: tuple[str, ...],
 ) -> FastAPI:
     try:
         from trajadapt.web.app import create_app
@@ -112,4 +119,4 @@ def _build_app(
         cases_dir=cases_dir,
         simulator=pybullet_simulator(convention.positive_x),
     )
-    return create_app(services, token)
+    return create_app(services, token, allowed_hosts)

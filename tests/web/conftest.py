@@ -45,7 +45,7 @@ def build_app(
         cases_dir=cases_dir,
         simulator=pybullet_simulator("left"),
     )
-    return create_app(services, token)
+    return create_app(services, token, allowed_hosts=("testserver",))
 
 
 @pytest.fixture

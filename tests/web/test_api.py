@@ -54,7 +54,7 @@ def test_bad_uploads_are_explained(client: TestClient) -> None:
     big = b"[" + b"0," * (10 * 1024 * 1024) + b"0]"  # 20 MB
     too_big = client.post("/api/upload?name=big.json", content=big)
     assert (
-        too_big.status_code == 400 and f"limit is {MAX_UPLOAD_BYTES / 1e6:.0f} MB" in too_big.json()["error"]
+        too_big.status_code == 413 and f"limit is {MAX_UPLOAD_BYTES / 1e6:.0f} MB" in too_big.json()["error"]
     )
     good = client.post("/api/upload?name=mine.json", content=json.dumps(CASE).encode())
     assert good.status_code == 200 and good.json()["name"] == "mine"

@@ -9,7 +9,7 @@ JSON ``{"error": "..."}`` in words; a stack trace never reaches the page.
 from __future__ import annotations
 
 import json
-import secrets
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -20,13 +20,22 @@ from fastapi.responses import FileResponse, JSONResponse, Response
 from pydantic import BaseModel
 
 from trajadapt.case import Case, case_from_dict
-from trajadapt.errors import InputError, SessionStateError, TrajadaptError
+from trajadapt.errors import BackendError, BackendTimeout, InputError, SessionStateError, TrajadaptError
+from trajadapt.safe_text import safe_text
+from trajadapt.web.guards import (
+    LOOPBACK_HOSTS,
+    MAX_BODY_BYTES,
+    BodyLimit,
+    attachment,
+    install_host_check,
+    install_token_check,
+)
 from trajadapt.web.history import stored_session
 from trajadapt.web.live import Jobs, LiveSession, add_version, result_file_name, work_folder
 from trajadapt.web.services import Services
 
 STATIC = Path(__file__).parent / "static"
-MAX_UPLOAD_BYTES = 8 * 1024 * 1024
+MAX_UPLOAD_BYTES = MAX_BODY_BYTES
 
 
 class StartBody(BaseModel):
@@ -65,12 +74,21 @@ class ServerState:
     jobs: Jobs = field(default_factory=Jobs)
 
 
-def create_app(services: Services, token: str | None = None) -> FastAPI:
-    """The review server's app; ``token`` (if set) must come with every API request."""
+def create_app(services: Services, token: str | None = None, allowed_hosts: Collection[str] = ()) -> FastAPI:
+    """The review server's app.
+
+    Args:
+        services: the backend, sandbox, log and simulator the sessions use.
+        token: if set, it must come with every API request.
+        allowed_hosts: host names the server answers to besides the loopback names (the bound
+            address, names given with --allowed-host).
+    """
     app = FastAPI(title="trajadapt review", docs_url=None, redoc_url=None)
     state = ServerState(services, token)
     _install_errors(app)
-    _install_token_check(app, token)
+    install_token_check(app, token)
+    install_host_check(app, (*LOOPBACK_HOSTS, *allowed_hosts))
+    app.add_middleware(BodyLimit, limit=MAX_UPLOAD_BYTES)
     _page_routes(app)
     _case_routes(app, state)
     _session_routes(app, state)
@@ -81,8 +99,7 @@ def create_app(services: Services, token: str | None = None) -> FastAPI:
 def _install_errors(app: FastAPI) -> None:
     @app.exception_handler(TrajadaptError)
     async def trajadapt_error(_: Request, exc: TrajadaptError) -> JSONResponse:
-        status = 409 if isinstance(exc, SessionStateError) else 400
-        return JSONResponse({"error": f"{exc}"}, status_code=status)
+        return JSONResponse({"error": safe_text(exc)}, status_code=_status_of(exc))
 
     @app.exception_handler(RequestValidationError)
     async def validation_error(_: Request, exc: RequestValidationError) -> JSONResponse:
@@ -96,19 +113,12 @@ def _install_errors(app: FastAPI) -> None:
         )
 
 
-def _install_token_check(app: FastAPI, token: str | None) -> None:
-    if token is None:
-        return
-
-    @app.middleware("http")
-    async def check_token(request: Request, call_next: Any) -> Response:
-        given = request.headers.get("x-trajadapt-token") or request.query_params.get("token") or ""
-        if request.url.path.startswith("/api/") and not secrets.compare_digest(given, token):
-            return JSONResponse(
-                {"error": "missing or wrong token; open the URL the server printed"}, status_code=401
-            )
-        response: Response = await call_next(request)
-        return response
+def _status_of(exc: TrajadaptError) -> int:
+    """The HTTP status for one of our errors: the client's fault (4xx) or the LLM server's (5xx)."""
+    statuses: list[tuple[type[TrajadaptError], int]] = [
+        (SessionStateError, 409), (BackendTimeout, 504), (BackendError, 502),
+    ]  # fmt: skip
+    return next((status for kind, status in statuses if isinstance(exc, kind)), 400)
 
 
 def _page_routes(app: FastAPI) -> None:
@@ -144,31 +154,14 @@ def _case_routes(app: FastAPI, state: ServerState) -> None:
 
     @app.post("/api/upload")
     async def upload(request: Request) -> dict[str, Any]:
-        body = await _read_limited(request)
+        body = await request.body()
         try:
             data = json.loads(body)
         except (UnicodeDecodeError, json.JSONDecodeError) as exc:
             raise InputError(f"the file is not JSON ({exc}); upload a case file in the OVITA format") from exc
-        name = Path(request.query_params.get("name", "uploaded")).stem or "uploaded"
+        name = safe_text(Path(request.query_params.get("name", "uploaded")).stem, 200) or "uploaded"
         uploaded = case_from_dict(data, f"uploaded file {name!r}", name=name)
         return {"name": uploaded.name, **uploaded.to_dict()}
-
-
-async def _read_limited(request: Request) -> bytes:
-    declared = request.headers.get("content-length")
-    if declared is not None and int(declared) > MAX_UPLOAD_BYTES:
-        raise InputError(_too_big(int(declared)))
-    chunks, size = [], 0
-    async for chunk in request.stream():
-        size += len(chunk)
-        if size > MAX_UPLOAD_BYTES:
-            raise InputError(_too_big(size))
-        chunks.append(chunk)
-    return b"".join(chunks)
-
-
-def _too_big(size: int) -> str:
-    return f"the file is {size / 1e6:.1f} MB or more; the limit is {MAX_UPLOAD_BYTES / 1e6:.0f} MB"
 
 
 def _session_routes(app: FastAPI, state: ServerState) -> None:
@@ -282,7 +275,7 @@ def _output_routes(app: FastAPI, state: ServerState) -> None:
         if live.result is None:
             raise SessionStateError("there is no approved result yet")
         text = json.dumps(live.result.to_dict(), indent=1)
-        headers = {"Content-Disposition": f'attachment; filename="{result_file_name(live)}"'}
+        headers = {"Content-Disposition": attachment(result_file_name(live))}
         return Response(text, media_type="application/json", headers=headers)
 
     @app.post("/api/sessions/{session_id}/simulate")

@@ -23,7 +23,13 @@ from trajadapt.errors import AnswerParseError, InputError
 from trajadapt.plan import parse_answer
 from trajadapt.trajectory import MAX_FILE_BYTES, load_trajectory_file
 
-FUZZ = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+# Derandomized so that CI runs the same examples each time; set derandomize=False to explore further.
+FUZZ = settings(
+    max_examples=150,
+    deadline=None,
+    derandomize=True,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
 VALID_CASE: dict[str, Any] = {
     "trajectory": [[0.0, 0.0, 0.5, 1.0], [0.0, 0.5, 0.5, 1.0], [0.0, 1.0, 0.5, 1.0]],
     "objects": [{"name": "box", "x": 0.2, "y": 0.5, "z": 0.5}],
@@ -37,7 +43,7 @@ odd_text = st.text(alphabet=st.characters(codec=None), max_size=40) | st.sampled
 numbers = (
     st.integers(min_value=-(10**500), max_value=10**500)
     | st.floats(allow_nan=True, allow_infinity=True)
-    | st.sampled_from([10**400, -(10**309), 1e308, 0])
+    | st.sampled_from([10**400, -(10**309), 1e308, 1e10, 0])
 )
 json_values = st.recursive(
     st.none() | st.booleans() | numbers | odd_text,
@@ -142,7 +148,12 @@ answer_code = st.sampled_from(
 )
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=25,
+    deadline=None,
+    derandomize=True,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
 @given(code=answer_code, plan=odd_text, instruction=odd_text, name=odd_text)
 def test_adapt_with_odd_answers_ends_in_a_result_or_a_clear_error(
     tmp_path: Path, code: str, plan: str, instruction: str, name: str

@@ -9,7 +9,7 @@ import numpy as np
 
 from trajadapt.errors import InvalidTrajectory
 from trajadapt.skills.core import extent
-from trajadapt.trajectory import Trajectory
+from trajadapt.trajectory import MAX_MAGNITUDE, Trajectory
 
 JUMP_FACTOR = 3.0
 
@@ -35,6 +35,13 @@ def validate_result(rows: Any) -> Trajectory:
         raise InvalidTrajectory(
             f"modified_trajectory has {len(bad)} non-finite value(s) (NaN or inf), first at "
             f"row {row}, column {'xyzv'[column]}"
+        )
+    huge = np.argwhere(np.abs(array) > MAX_MAGNITUDE)
+    if huge.size:
+        row, column = (int(v) for v in huge[0])
+        raise InvalidTrajectory(
+            f"modified_trajectory has {len(huge)} value(s) beyond ±{MAX_MAGNITUDE:.0e}, first at row {row}, "
+            f"column {'xyzv'[column]} ({array[row, column]:.3g}); keep the trajectory in the scene's units"
         )
     negative = np.flatnonzero(array[:, 3] < 0)
     if negative.size:

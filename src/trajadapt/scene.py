@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from trajadapt.errors import InputError
 from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
+from trajadapt.trajectory import finite_float
 
 NAME_CHARS = 200
 
@@ -109,13 +109,7 @@ def _parse_dimensions(item: dict[str, Any], where: str) -> tuple[float, float, f
 def _finite_number(value: Any, where: str) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise InputError(f"{where} must be a number, got {safe_text(repr(value), 80)}")
-    try:
-        number = float(value)
-    except OverflowError:
-        raise InputError(f"{where} is too large for a number") from None
-    if not math.isfinite(number):
-        raise InputError(f"{where} must be finite, got {value!r}")
-    return number
+    return finite_float(value, where)
 
 
 def parse_text_field(raw: Any, where: str, limit: int = INSTRUCTION_CHARS) -> str:

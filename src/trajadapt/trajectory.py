@@ -20,6 +20,8 @@ from trajadapt.safe_text import safe_text
 COLUMNS = ("x", "y", "z", "v")
 MIN_WAYPOINTS = 2
 MAX_WAYPOINTS = 100_000
+MAX_MAGNITUDE = 1e9
+"""Largest coordinate or speed accepted: beyond it squares and distances lose all precision."""
 MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest case, scene or trajectory file read (100,000 waypoints as JSON take about 8 MB)."""
 
@@ -46,6 +48,13 @@ def validate_waypoints(rows: Any, where: str) -> npt.NDArray[np.float64]:
     array = np.empty((len(rows), 4), dtype=np.float64)
     for index, row in enumerate(rows):
         array[index] = _validate_row(row, f"{where}[{index}]")
+    huge = np.argwhere(np.abs(array) > MAX_MAGNITUDE)
+    if huge.size:
+        row, column = (int(v) for v in huge[0])
+        raise InputError(
+            f"{where}[{row}]: {COLUMNS[column]} = {array[row, column]:.3g} is beyond ±{MAX_MAGNITUDE:.0e}; "
+            "no robot trajectory is that large (check the units)"
+        )
     negative = np.flatnonzero(array[:, 3] < 0)
     if negative.size:
         first = int(negative[0])

@@ -284,7 +284,8 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
     type=click.IntRange(1, 64),
     default=1,
     show_default=True,
-    help="Cases in flight at once (useful against a served model: vLLM, Ollama).",
+    help="Cases in flight at once: requests side by side to a served model (vLLM, Ollama), or that many "
+    "model processes with the local backend (one thread each on 2 cores; results equal a serial run).",
 )
 @click.option("--force", is_flag=True, help="Run cases again even if they have a result.")
 @click.option(

@@ -170,3 +170,52 @@ def test_prepare_bar_prints_lines_off_a_terminal(capsys: pytest.CaptureFixture[s
     lines = capsys.readouterr().err.splitlines()
     assert lines[0] == "assembling the model: 0%" and lines[-1] == "assembling the model: 100%"
     assert len(lines) == 11
+
+
+def test_thread_layout_keeps_generation_off_half_the_cores() -> None:
+    from trajadapt.backends.local import ThreadLayout, thread_layout
+
+    assert thread_layout(cores=2) == ThreadLayout(generate=1, read_prompt=2)
+    assert thread_layout(cores=1) == ThreadLayout(generate=1, read_prompt=1)
+    assert thread_layout(cores=16) == ThreadLayout(generate=4, read_prompt=16)
+    assert thread_layout(cores=2, generate=2, read_prompt=1) == ThreadLayout(generate=2, read_prompt=1)
+
+
+def test_parallel_processes_share_the_cores() -> None:
+    import os
+
+    backend = LocalBackend(LocalOptions())
+    shared = backend.process_options(processes=max(os.cpu_count() or 1, 1))
+    assert shared.n_threads == 1 and shared.n_threads_batch == 1
+    own = LocalBackend(LocalOptions(n_threads=3)).process_options(processes=2)
+    assert own.n_threads == 3  # what the user set is kept
+
+
+@pytest.mark.local_model
+@needs_model
+def test_bench_with_two_model_processes_gives_the_serial_results(
+    real_model: Path, ovita_dir: Path, tmp_path: Path
+) -> None:
+    import shutil
+
+    from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
+
+    folder = tmp_path / "cases"
+    folder.mkdir()
+    for name in ("latte_10", "latte_0", "latte_32"):
+        shutil.copy(ovita_dir / "latte_subset" / f"{name}.json", folder / f"{name}.json")
+    cases = discover_cases([folder])
+    options = LocalOptions(
+        model_path=real_model, n_threads=1, n_threads_batch=1, cache_dir=tmp_path / "cache"
+    )
+    # Both runs start from the saved prompt state: a fresh context reads the fixed prefix together with
+    # the first case in one batch, which can tip a near-tie token (seen: set_speed 0.5 vs 0.6).
+    run_benchmark(cases[:1], LocalBackend(options), BenchConfig(out_dir=tmp_path / "warm", repair_attempts=0))
+    serial = run_benchmark(
+        cases, LocalBackend(options), BenchConfig(out_dir=tmp_path / "serial", repair_attempts=0)
+    )
+    parallel = run_benchmark(
+        cases, LocalBackend(options), BenchConfig(out_dir=tmp_path / "parallel", repair_attempts=0, jobs=2)
+    )
+    assert [r["code"] for r in serial] == [r["code"] for r in parallel]
+    assert [r["modified_trajectory"] for r in serial] == [r["modified_trajectory"] for r in parallel]

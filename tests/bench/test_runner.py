@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -131,3 +132,28 @@ def test_waypoints_in_prompt_reaches_the_request(tmp_path: Path, ovita_dir: Path
         user_text = backend.requests[0].messages[1].content
         assert ("waypoints [x, y, z, velocity]" in user_text) is waypoints
         assert record["waypoints_in_prompt"] is waypoints
+
+
+def test_a_backend_that_answers_one_at_a_time_runs_in_parallel_processes(
+    tmp_path: Path, ovita_dir: Path
+) -> None:
+    from tests.bench.one_at_a_time import OneAtATimeBackend
+
+    folder = tmp_path / "cases"
+    folder.mkdir()
+    for index in range(0, 12, 2):
+        shutil.copy(ovita_dir / "latte_subset" / f"latte_{index}.json", folder / f"case_{index}.json")
+    cases = discover_cases([folder])
+    serial = run_benchmark(cases, OneAtATimeBackend(), BenchConfig(out_dir=tmp_path / "serial"))
+    done: list[str] = []
+    parallel = run_benchmark(
+        cases,
+        OneAtATimeBackend(),
+        BenchConfig(out_dir=tmp_path / "parallel", jobs=2),
+        lambda c, _: done.append(c.key),
+    )
+    assert sorted(done) == sorted(case.key for case in cases)
+    answered_by = {record["model"] for record in parallel}
+    assert 1 <= len(answered_by) <= 2 and f"pid-{os.getpid()}" not in answered_by  # worker processes answered
+    for one, other in zip(serial, parallel, strict=True):
+        assert one["code"] == other["code"] and one["modified_trajectory"] == other["modified_trajectory"]

@@ -60,6 +60,8 @@ class Backend(ABC):
     """An LLM that completes chat requests. Subclasses set ``name`` and an ``Options`` dataclass."""
 
     name: ClassVar[str] = "backend"
+    concurrent: ClassVar[bool] = True
+    """False where one loaded model answers one request at a time: parallel jobs then need processes."""
 
     @dataclass(frozen=True)
     class Options:
@@ -95,6 +97,10 @@ class Backend(ABC):
 
     def close(self) -> None:  # noqa: B027 - optional hook, most backends hold nothing
         """Release resources held by the backend."""
+
+    def process_options(self, processes: int) -> Any:
+        """The options of one of ``processes`` copies of this backend running side by side."""
+        return self.options
 
 
 def parse_options(options_type: type[Any], raw: Mapping[str, Any], backend: str) -> Any:

@@ -7,10 +7,12 @@ unless ``force`` is set, so an interrupted run resumes where it stopped.
 
 from __future__ import annotations
 
+import atexit
 import json
+import multiprocessing
 import queue
 from collections.abc import Callable, Iterator
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor, as_completed
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -111,19 +113,75 @@ def run_benchmark(
     config: BenchConfig,
     on_case_done: ProgressCallback | None = None,
 ) -> list[dict[str, Any]]:
-    """Run the cases that have no result yet (all with ``force``); return every case's record."""
+    """Run the cases that have no result yet (all with ``force``); return every case's record.
+
+    With ``config.jobs`` > 1, cases run side by side: on threads sharing ``backend`` where it takes
+    concurrent requests (a served model), else in that many processes, each with its own copy of the
+    backend (the embedded model: one llama.cpp context per process, the cores shared out).
+    """
     todo = [case for case in cases if config.force or not result_path(config, case).is_file()]
-    with _sandbox_pool(max(config.jobs, 1)) as sandboxes, ThreadPoolExecutor(max(config.jobs, 1)) as pool:
-        futures = [pool.submit(_run_and_save, case, backend, config, sandboxes) for case in todo]
-        for case, future in zip(todo, futures, strict=True):
-            record = future.result()
-            if on_case_done is not None:
-                on_case_done(case, record)
+    jobs = max(config.jobs, 1)
+    if jobs > 1 and not backend.concurrent and todo:
+        _run_in_processes(todo, backend, config, jobs, on_case_done)
+    else:
+        _run_in_threads(todo, backend, config, jobs, on_case_done)
     return [
         json.loads(result_path(config, case).read_text())
         for case in cases
         if result_path(config, case).is_file()
     ]
+
+
+def _run_in_threads(
+    todo: list[BenchCase],
+    backend: Backend,
+    config: BenchConfig,
+    jobs: int,
+    on_case_done: ProgressCallback | None,
+) -> None:
+    with _sandbox_pool(jobs) as sandboxes, ThreadPoolExecutor(jobs) as pool:
+        futures = [pool.submit(_run_and_save, case, backend, config, sandboxes) for case in todo]
+        for case, future in zip(todo, futures, strict=True):
+            record = future.result()
+            if on_case_done is not None:
+                on_case_done(case, record)
+
+
+def _run_in_processes(
+    todo: list[BenchCase],
+    backend: Backend,
+    config: BenchConfig,
+    jobs: int,
+    on_case_done: ProgressCallback | None,
+) -> None:
+    worker = (type(backend), backend.process_options(jobs), config)
+    context = multiprocessing.get_context("spawn")  # llama.cpp and the sandbox worker do not survive fork
+    with ProcessPoolExecutor(jobs, mp_context=context, initializer=_start_worker, initargs=worker) as pool:
+        futures = {pool.submit(_run_in_worker, case): case for case in todo}
+        for future in as_completed(futures):
+            record = future.result()
+            if on_case_done is not None:
+                on_case_done(futures[future], record)
+
+
+_worker: tuple[Backend, Sandbox, BenchConfig] | None = None
+
+
+def _start_worker(backend_type: type[Backend], options: Any, config: BenchConfig) -> None:
+    """In a bench process: build its own backend and sandbox, closed when the process ends."""
+    global _worker
+    backend, sandbox = backend_type(options), Sandbox()
+    _worker = (backend, sandbox, config)
+    atexit.register(sandbox.close)
+    atexit.register(backend.close)
+
+
+def _run_in_worker(case: BenchCase) -> dict[str, Any]:
+    assert _worker is not None, "bench worker process not started"
+    backend, sandbox, config = _worker
+    record = run_case(case, backend, sandbox, config)
+    write_json_atomic(result_path(config, case), record)
+    return record
 
 
 @contextmanager

@@ -1,11 +1,13 @@
-"""Latency of the embedded model: cold start and warm answers, where the time goes, peak memory.
+"""Latency of the embedded model: cold start and warm answers, idle and beside a busy process.
 
 Cold start = a fresh process doing import + model load + first answer (run as a subprocess, so the
 import is counted), with and without the on-disk prompt state. Warm = later answers in the same
-process (median of --repeats per instruction). Reports tokens in/out, tokens per second, prefill
-vs generation vs sandbox time, and peak RSS.
+process, the instructions taken in turn (each answer reads its own instruction; no repair round),
+once on an idle machine and once while a CPU-bound process (started and stopped here) runs beside
+it. Reports p50/p90 per answer, tokens per second, prefill vs generation vs sandbox time, the
+thread layout, and peak RSS.
 
-Run: .venv/bin/python benchmarks/local_latency.py [--repeats 5] [--case FILE]
+Run: .venv/bin/python benchmarks/local_latency.py [--repeats 5] [--case FILE] [-o n_threads 2]
 """
 
 from __future__ import annotations
@@ -19,6 +21,8 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 INSTRUCTIONS = (
@@ -34,12 +38,12 @@ def one_answer(case_path: Path, instruction: str, cache_dir: Path, prompt_cache:
     from trajadapt.backends.local import LocalBackend, LocalOptions
     from trajadapt.case import load_case
     from trajadapt.sandbox.runner import Sandbox
-    from trajadapt.session import AdaptationSession
+    from trajadapt.session import AdaptationSession, SessionSettings
 
     backend = _backend(LocalBackend, LocalOptions, cache_dir, prompt_cache)
     case = load_case(case_path).with_instruction(instruction)
     with Sandbox() as sandbox:
-        session = AdaptationSession(case, backend, sandbox)
+        session = AdaptationSession(case, backend, sandbox, SessionSettings(repair_attempts=0))
         started = time.perf_counter()
         session.draft()
         result = session.approve()
@@ -60,20 +64,53 @@ def one_answer(case_path: Path, instruction: str, cache_dir: Path, prompt_cache:
 
 
 _BACKENDS: dict[tuple[str, bool], object] = {}
+THREADS: dict[str, int] = {}  # n_threads / n_threads_batch given on the command line
 
 
 def _backend(backend_type: type, options_type: type, cache_dir: Path, prompt_cache: bool) -> object:
     key = (str(cache_dir), prompt_cache)
     if key not in _BACKENDS:
-        _BACKENDS[key] = backend_type(options_type(cache_dir=cache_dir, prompt_cache=prompt_cache))
+        _BACKENDS[key] = backend_type(options_type(cache_dir=cache_dir, prompt_cache=prompt_cache, **THREADS))
     return _BACKENDS[key]
+
+
+@contextmanager
+def busy_core() -> Iterator[None]:
+    """A CPU-bound process beside the model for the duration of the block."""
+    hog = subprocess.Popen([sys.executable, "-c", "while True: pass"])
+    try:
+        time.sleep(0.5)
+        yield
+    finally:
+        hog.kill()
+        hog.wait()
+
+
+def warm_answers(case_path: Path, cache_dir: Path, repeats: int) -> list[dict[str, float]]:
+    """``repeats`` rounds over the instructions, after one unmeasured answer."""
+    one_answer(case_path, INSTRUCTIONS[-1], cache_dir, True)
+    return [one_answer(case_path, text, cache_dir, True) for _ in range(repeats) for text in INSTRUCTIONS]
+
+
+def describe_warm(label: str, runs: list[dict[str, float]]) -> str:
+    """One line: p50/p90 per answer and where the median answer's time goes."""
+    totals = sorted(run["total_s"] for run in runs)
+    p90 = totals[min(len(totals) - 1, round(0.9 * (len(totals) - 1)))]
+    rates = [run["completion_tokens"] / max(run["generation_s"], 1e-9) for run in runs]
+    median = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
+    return (
+        f"warm, {label}: p50 {statistics.median(totals):.1f} s, p90 {p90:.1f} s per answer "
+        f"({len(runs)} answers); median prefill {median['prefill_s']:.1f} s + generation "
+        f"{median['generation_s']:.1f} s ({median['completion_tokens']:.0f} tokens, "
+        f"{statistics.median(rates):.1f} tok/s) + sandbox {1000 * median['exec_s']:.0f} ms"
+    )
 
 
 def cold_start(case_path: Path, cache_dir: Path, prompt_cache: bool) -> dict[str, float]:
     """Run one adaptation in a fresh interpreter and time it from the process start."""
     code = (
         "import json, sys, time; t0 = time.perf_counter(); sys.path.insert(0, 'benchmarks');"
-        "import local_latency as m;"
+        f"import local_latency as m; m.THREADS.update({THREADS!r});"
         f"r = m.one_answer(m.Path({str(case_path)!r}), {INSTRUCTIONS[0]!r}, m.Path({str(cache_dir)!r}), {prompt_cache});"
         "r['cold_s'] = time.perf_counter() - t0; r['rss_mb'] = m.peak_rss_mb(); print(json.dumps(r))"
     )
@@ -93,7 +130,12 @@ def main() -> None:
     )
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--case", type=Path, default=DEFAULT_CASE)
+    parser.add_argument("-o", "--option", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
+                        help="n_threads or n_threads_batch for the model (default: chosen from the machine)")  # fmt: skip
     args = parser.parse_args()
+    THREADS.update(
+        {name: int(value) for name, value in args.option if name in ("n_threads", "n_threads_batch")}
+    )
     if not args.case.is_file():
         parser.error(f"case {args.case} not found; give one with --case FILE (default: ovita-dev's latte_10)")
     from trajadapt.model_file import ensure_model
@@ -115,17 +157,17 @@ def main() -> None:
         print(f"cold start, saving state:    {first['cold_s']:.1f} s, RSS {first['rss_mb']:.0f} MB")
         print(f"cold start, prompt state:    {warm_start['cold_s']:.1f} s (prefill {warm_start['prefill_s']:.1f} s, "
               f"{warm_start['restored_tokens']:.0f} tokens restored), RSS {warm_start['rss_mb']:.0f} MB")  # fmt: skip
-        for instruction in INSTRUCTIONS:
-            runs = [
-                one_answer(args.case, instruction, scratch / "models", True) for _ in range(args.repeats + 1)
-            ][1:]
-            median = {key: statistics.median(run[key] for run in runs) for key in runs[0]}
-            rate = median["completion_tokens"] / max(median["generation_s"], 1e-9)
-            print(
-                f"warm, {instruction[:40]!r}: median {median['total_s']:.1f} s = prefill {median['prefill_s']:.1f} s "
-                f"+ generation {median['generation_s']:.1f} s ({median['completion_tokens']:.0f} tokens, {rate:.1f} tok/s) "
-                f"+ sandbox {1000 * median['exec_s']:.0f} ms; prompt {median['prompt_tokens']:.0f} tokens; ok {median['ok']:.0%}"
-            )
+        from trajadapt.backends.local import thread_layout
+
+        layout = thread_layout(generate=THREADS.get("n_threads"), read_prompt=THREADS.get("n_threads_batch"))
+        print(f"threads: {layout.generate} generating, {layout.read_prompt} reading the prompt")
+        idle = warm_answers(args.case, scratch / "models", args.repeats)
+        print(describe_warm("idle", idle))
+        with busy_core():
+            busy = warm_answers(args.case, scratch / "models", args.repeats)
+        print(describe_warm("one CPU-bound process beside it", busy))
+        ratio = statistics.median(r["total_s"] for r in busy) / statistics.median(r["total_s"] for r in idle)
+        print(f"busy / idle p50: {ratio:.2f}x")
         print(f"peak RSS of the warm process: {peak_rss_mb():.0f} MB")
     finally:
         shutil.rmtree(scratch, ignore_errors=True)

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
+import os
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -72,6 +75,7 @@ def pybullet_simulator(positive_x: str) -> Callable[[AdaptationResult, str, Path
     def run(result: AdaptationResult, robot: str, folder: Path) -> dict[str, Any]:
         from trajadapt.sim import SimulationOptions, simulate
 
+        yield_to_the_model()
         assert result.trajectory is not None
         image, animation = folder / f"{robot}.png", folder / f"{robot}.gif"
         options = SimulationOptions(image=image, animation=animation, positive_x=positive_x)
@@ -83,3 +87,18 @@ def pybullet_simulator(positive_x: str) -> Callable[[AdaptationResult, str, Path
         return {**data, "image": image.name, "animation": animation.name, "summary": report.summary_lines()}
 
     return run
+
+
+SIMULATION_NICENESS = 10
+
+
+def yield_to_the_model() -> None:
+    """Run the calling thread (a simulation job) below the model's priority.
+
+    On Linux niceness is per thread, so this leaves the server's other threads alone; the model's
+    generating thread then gets a core first when a simulation and an answer run at once.
+    """
+    with contextlib.suppress(OSError, AttributeError):  # not Linux, or not permitted: run as is
+        thread = threading.get_native_id()
+        if os.getpriority(os.PRIO_PROCESS, thread) < SIMULATION_NICENESS:  # only ever lower it
+            os.setpriority(os.PRIO_PROCESS, thread, SIMULATION_NICENESS)

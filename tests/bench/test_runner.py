@@ -7,6 +7,7 @@ import os
 import shutil
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 
 from trajadapt.backends.scripted import ScriptedBackend
@@ -157,3 +158,24 @@ def test_a_backend_that_answers_one_at_a_time_runs_in_parallel_processes(
     assert 1 <= len(answered_by) <= 2 and f"pid-{os.getpid()}" not in answered_by  # worker processes answered
     for one, other in zip(serial, parallel, strict=True):
         assert one["code"] == other["code"] and one["modified_trajectory"] == other["modified_trajectory"]
+
+
+def test_a_figure_that_cannot_be_drawn_does_not_lose_the_report(
+    tmp_path: Path, ovita_dir: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import trajadapt.bench.report as report
+
+    folder = make_folder(tmp_path, ovita_dir)
+    records = run_benchmark(
+        discover_cases([folder]),
+        ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, KEEP]),
+        BenchConfig(out_dir=tmp_path / "out"),
+    )
+
+    def broken(path: Path, record: dict) -> None:
+        raise ValueError("mathtext cannot parse '$\\\\frac{'")
+
+    monkeypatch.setattr(report, "_figure", broken)
+    summary = report.write_report(tmp_path / "out", records)
+    assert summary["overall"]["judged"] == 2
+    assert (tmp_path / "out" / "report.md").is_file() and (tmp_path / "out" / "summary.json").is_file()

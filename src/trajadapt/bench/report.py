@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 import re
 import statistics
 from collections import Counter
@@ -15,6 +16,8 @@ from trajadapt.prompts import AXIS_CONVENTIONS
 from trajadapt.results import write_bytes_atomic, write_json_atomic
 from trajadapt.scene import Scene, parse_objects
 from trajadapt.trajectory import Trajectory
+
+logger = logging.getLogger(__name__)
 
 
 def _subset(record: dict[str, Any]) -> str:
@@ -161,7 +164,12 @@ def write_report(out_dir: Path, records: list[dict[str, Any]]) -> dict[str, Any]
     write_bytes_atomic(out_dir / "report.md", render_markdown(summary, records).encode("utf-8"))
     for record in records:
         if record["evaluation"]["judged"] and not record["evaluation"]["passed"]:
-            _figure(out_dir / "figures" / _figure_name(record), record)
+            try:
+                _figure(out_dir / "figures" / _figure_name(record), record)
+            except Exception as exc:  # noqa: BLE001 - one figure that cannot be drawn must not lose the report
+                logger.warning(
+                    "no figure for %s: %s: %s", record["evaluation"]["task_id"], type(exc).__name__, exc
+                )
     return summary
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import json
 import logging
 import shutil
@@ -212,10 +213,7 @@ class Sandbox:
             process = _start(command)
             if _wait_ready(process):
                 self._process, self.outer_layer = process, layer
-                if layer == "process":
-                    logger.warning(PROCESS_ONLY_WARNING)
-                if not seccomp.supported():
-                    logger.warning("no seccomp filter on this platform: the sandbox's OS layers are weaker")
+                _warn_once(layer)
                 return process
             stderr = _drain(process)
             logger.warning("sandbox worker (%s) did not start: %s", layer, stderr.strip()[-500:])
@@ -238,6 +236,15 @@ class Sandbox:
 
 
 PACKAGE_ROOT = Path(__file__).resolve().parents[2]
+
+
+@functools.cache
+def _warn_once(outer_layer: str) -> None:
+    """Say once per process what is weaker than the full sandbox on this machine."""
+    if outer_layer == "process":
+        logger.warning(PROCESS_ONLY_WARNING)
+    if not seccomp.supported():
+        logger.warning("no seccomp filter on this platform: the sandbox's OS layers are weaker")
 
 
 def _worker_environment() -> dict[str, str]:

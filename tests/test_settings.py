@@ -40,3 +40,34 @@ def test_bad_values_name_their_source(home: Path, monkeypatch: pytest.MonkeyPatc
     (home / "config.toml").write_text("colour = 'red'\n")
     with pytest.raises(InputError, match="unknown setting 'colour'"):
         load_settings()
+
+
+@pytest.mark.parametrize("name", ["axes", "mode", "isolation"])
+def test_an_unknown_choice_in_the_environment_is_a_clear_error(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv(f"TRAJADAPT_{name.upper()}", "foo")
+    with pytest.raises(InputError, match=f"{name} 'foo' is not one of"):
+        load_settings()
+
+
+def test_the_choices_match_what_the_code_knows() -> None:
+    from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+    from trajadapt.settings import CHOICES
+
+    assert set(CHOICES["axes"]) == set(AXIS_CONVENTIONS)
+    assert set(CHOICES["mode"]) == set(PROMPT_MODES)
+    assert set(CHOICES["isolation"]) == {"auto", "bwrap", "process"}
+
+
+def test_an_unknown_axes_variable_fails_the_command_in_words(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    from click.testing import CliRunner
+
+    from trajadapt.cli import cli
+
+    monkeypatch.setenv("TRAJADAPT_AXES", "foo")
+    result = CliRunner().invoke(cli, ["adapt", str(tmp_path / "absent.json"), "-b", "scripted", "--yes"])
+    assert result.exit_code == 1
+    assert "axes 'foo' is not one of" in result.output and "Traceback" not in result.output

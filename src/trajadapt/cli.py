@@ -340,6 +340,7 @@ def bench(
         jobs,
         force,
         settings.waypoints_in_prompt,
+        isolation_of(settings),
     )
     if rescore:
         click.echo(f"judged {rescore_results(found, config)} stored result(s) again")

@@ -86,7 +86,27 @@ def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:
     settings = replace(settings, **_from_toml(settings.config_path))
     settings = replace(settings, **_from_environment())
     given = {key: value for key, value in (overrides or {}).items() if value is not None}
-    return replace(settings, **given)
+    settings = replace(settings, **given)
+    _check_choices(settings)
+    return settings
+
+
+# The names each setting takes; tests check that they match the prompt conventions, modes and isolations.
+CHOICES: dict[str, tuple[str, ...]] = {
+    "axes": ("ovita", "paper"),
+    "mode": ("paper", "skills"),
+    "isolation": ("auto", "bwrap", "process"),
+}
+
+
+def _check_choices(settings: Settings) -> None:
+    for name, allowed in CHOICES.items():
+        value = getattr(settings, name)
+        if value not in allowed:
+            raise InputError(
+                f"{name} {value!r} is not one of {', '.join(allowed)} (set by TRAJADAPT_{name.upper()}, "
+                f"{settings.config_path} or a command-line flag)"
+            )
 
 
 def _from_toml(path: Path) -> dict[str, Any]:

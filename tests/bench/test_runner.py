@@ -179,3 +179,22 @@ def test_a_figure_that_cannot_be_drawn_does_not_lose_the_report(
     summary = report.write_report(tmp_path / "out", records)
     assert summary["overall"]["judged"] == 2
     assert (tmp_path / "out" / "report.md").is_file() and (tmp_path / "out" / "summary.json").is_file()
+
+
+def test_the_bench_sandboxes_use_the_isolation_asked_for(
+    tmp_path: Path, ovita_dir: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import trajadapt.bench.runner as runner
+
+    asked: list[str] = []
+    real = runner.Sandbox
+
+    def recording(*args: object, isolation: str = "auto", **kwargs: object) -> object:
+        asked.append(isolation)
+        return real(*args, isolation=isolation, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(runner, "Sandbox", recording)
+    folder = make_folder(tmp_path, ovita_dir)
+    config = BenchConfig(out_dir=tmp_path / "out", isolation="process")
+    run_benchmark(discover_cases([folder]), ScriptedBackend(answers=[KEEP] * 3), config)
+    assert asked == ["process"]

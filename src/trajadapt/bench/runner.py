@@ -28,7 +28,7 @@ from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
 from trajadapt.prompts import AXIS_CONVENTIONS
 from trajadapt.results import write_json_atomic
-from trajadapt.sandbox.runner import Sandbox
+from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 from trajadapt.skills.core import Axes
 
@@ -62,6 +62,7 @@ class BenchConfig:
     jobs: int = 1
     force: bool = False
     waypoints_in_prompt: bool = False
+    isolation: Isolation = "auto"
 
 
 def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
@@ -139,7 +140,7 @@ def _run_in_threads(
     jobs: int,
     on_case_done: ProgressCallback | None,
 ) -> None:
-    with _sandbox_pool(jobs) as sandboxes, ThreadPoolExecutor(jobs) as pool:
+    with _sandbox_pool(jobs, config.isolation) as sandboxes, ThreadPoolExecutor(jobs) as pool:
         futures = [pool.submit(_run_and_save, case, backend, config, sandboxes) for case in todo]
         for case, future in zip(todo, futures, strict=True):
             record = future.result()
@@ -170,7 +171,7 @@ _worker: tuple[Backend, Sandbox, BenchConfig] | None = None
 def _start_worker(backend_type: type[Backend], options: Any, config: BenchConfig) -> None:
     """In a bench process: build its own backend and sandbox, closed when the process ends."""
     global _worker
-    backend, sandbox = backend_type(options), Sandbox()
+    backend, sandbox = backend_type(options), Sandbox(isolation=config.isolation)
     _worker = (backend, sandbox, config)
     atexit.register(sandbox.close)
     atexit.register(backend.close)
@@ -185,9 +186,9 @@ def _run_in_worker(case: BenchCase) -> dict[str, Any]:
 
 
 @contextmanager
-def _sandbox_pool(size: int) -> Iterator[queue.Queue[Sandbox]]:
+def _sandbox_pool(size: int, isolation: Isolation) -> Iterator[queue.Queue[Sandbox]]:
     sandboxes: queue.Queue[Sandbox] = queue.Queue()
-    created = [Sandbox() for _ in range(size)]
+    created = [Sandbox(isolation=isolation) for _ in range(size)]
     for sandbox in created:
         sandboxes.put(sandbox)
     try:

@@ -84,7 +84,7 @@ def bounded_case(simple_case: Case) -> Case:
 def test_violation_goes_back_with_numbers(bounded_case: Case, sandbox: Sandbox) -> None:
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)"),
                                        answer("modified_trajectory = shift(get_trajectory(), 'left', 0.15)")])  # fmt: skip
-    session = AdaptationSession(bounded_case, backend, sandbox)
+    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(project=False))
     session.draft()
     result = session.approve()
     assert result.ok and result.attempts == 2
@@ -92,11 +92,14 @@ def test_violation_goes_back_with_numbers(bounded_case: Case, sandbox: Sandbox) 
     assert "x above 0.2 (highest 0.5)" in backend.requests[-1].messages[-1].content
 
 
-def test_projection_instead_of_repair(bounded_case: Case, sandbox: Sandbox) -> None:
+def test_projection_by_default_keeps_the_room_and_says_what_bound_it(
+    bounded_case: Case, sandbox: Sandbox
+) -> None:
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)")])
-    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(project=True))
+    session = AdaptationSession(bounded_case, backend, sandbox)
     session.draft()
     result = session.approve()
     assert result.ok and result.attempts == 1 and result.trajectory is not None
     assert result.trajectory.positions[:, 0].max() <= 0.2 + 1e-6
-    assert any("projected onto the constraints" in note.message for note in result.notes)
+    note = next(note.message for note in result.notes if "projected onto the constraints" in note.message)
+    assert "moved by at most" in note and "x above 0.2 (highest 0.5)" in note

@@ -120,10 +120,11 @@ def cli(debug: bool) -> None:
 )
 @click.option("--seed", type=int, default=None, help="Sampling seed (default 0).")
 @click.option(
-    "--project",
+    "--project/--no-project",
     "project_onto",
-    is_flag=True,
-    help="Project a result that breaks the constraints onto them (smooth least squares; needs [qp]).",
+    default=None,
+    help="Project a result that breaks the stated constraints onto them (the default; smooth least "
+    "squares, needs [qp]), or send it back for repair (--no-project).",
 )
 @click.option("--clearance", type=float, default=None, help="Minimum distance to keep from every object.")
 @click.option("--max-speed", type=float, default=None, help="Highest allowed velocity.")
@@ -151,7 +152,7 @@ def adapt(
     mode: str | None,
     temperature: float | None,
     seed: int | None,
-    project_onto: bool,
+    project_onto: bool | None,
     clearance: float | None,
     max_speed: float | None,
     no_log: bool,
@@ -161,14 +162,15 @@ def adapt(
 
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
-    overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed}
+    overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
+                 "project": project_onto}  # fmt: skip
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or sibling_file(out, ".png")
     limits = Constraints(min_clearance=clearance, max_speed=max_speed)
-    result = _run_session(case, chosen, settings, yes, limits, project_onto)
+    result = _run_session(case, chosen, settings, yes, limits)
     _save(result, out, plot_file, settings)
     if not result.ok:
         raise click.exceptions.Exit(1)
@@ -200,7 +202,7 @@ def _load_case(
 
 
 def _run_session(
-    case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints, project_onto: bool
+    case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints
 ) -> AdaptationResult:
     store = Store(settings.log_path) if settings.log else None
     session_settings = SessionSettings(
@@ -211,7 +213,7 @@ def _run_session(
         seed=settings.seed,
         waypoints_in_prompt=settings.waypoints_in_prompt,
         constraints=limits,
-        project=project_onto,
+        project=settings.project,
     )
     try:
         with Sandbox(isolation=isolation_of(settings)) as sandbox, Progress() as progress:
@@ -304,6 +306,12 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
     default=None,
     help="Send every waypoint to the LLM, or only the trajectory's summary (default; see the README).",
 )
+@click.option(
+    "--project/--no-project",
+    "project_onto",
+    default=None,
+    help="Project results that break a case's constraints onto them (default), or fail them.",
+)
 def bench(
     cases: tuple[Path, ...],
     backend: str | None,
@@ -317,6 +325,7 @@ def bench(
     axes: str | None,
     repairs: int | None,
     waypoints_in_prompt: bool | None,
+    project_onto: bool | None,
 ) -> None:
     """Run every case in CASES (files or folders) and score the results against expectations.
 
@@ -329,6 +338,7 @@ def bench(
             "axes": axes,
             "repair_attempts": repairs,
             "waypoints_in_prompt": waypoints_in_prompt,
+            "project": project_onto,
         }
     )
     found = discover_cases(list(cases), expectations)
@@ -341,6 +351,7 @@ def bench(
         force,
         settings.waypoints_in_prompt,
         isolation_of(settings),
+        settings.project,
     )
     if rescore:
         click.echo(f"judged {rescore_results(found, config)} stored result(s) again")

@@ -109,6 +109,7 @@ def _build_app(
         temperature=settings.temperature,
         seed=settings.seed,
         waypoints_in_prompt=settings.waypoints_in_prompt,
+        project=settings.project,
     )
     services = Services(
         backend=make_backend(settings, options, model_path),

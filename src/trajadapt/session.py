@@ -16,7 +16,13 @@ from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completio
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
 from trajadapt.constraints import Constraints, constraints_for, new_violations
-from trajadapt.errors import AnswerParseError, BackendError, InvalidTrajectory, SessionStateError
+from trajadapt.errors import (
+    AnswerParseError,
+    BackendError,
+    DependencyNotInstalled,
+    InvalidTrajectory,
+    SessionStateError,
+)
 from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
@@ -33,8 +39,9 @@ TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
 class SessionSettings:
     """How a session talks to the LLM and how hard it tries before giving up.
 
-    ``constraints`` adds the user's limits to those the scene states; a result that breaks them goes
-    back for repair with the measured numbers, or, with ``project``, is projected onto them.
+    ``constraints`` adds the user's limits to those the scene states; a result that breaks them is
+    projected onto them (``project``, the default; a review note says what bound it and how far
+    waypoints moved), or, with ``project=False``, goes back for repair with the measured numbers.
     """
 
     axes: AxisConvention = AXIS_CONVENTIONS["paper"]
@@ -43,7 +50,7 @@ class SessionSettings:
     format_retries: int = 1
     constraints: Constraints | None = None
     check_constraints: bool = True
-    project: bool = False
+    project: bool = True
     temperature: float = 0.0
     max_tokens: int = 1024
     seed: int | None = 0
@@ -326,8 +333,12 @@ class AdaptationSession:
         original = self.case.trajectory.array
         violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations and self.settings.project:
-            projection = project(trajectory.array, original, self.case.scene, limits)
-            self._last_notes += (projection.describe(),)
+            try:
+                projection = project(trajectory.array, original, self.case.scene, limits)
+            except DependencyNotInstalled as exc:
+                return "ConstraintViolation: " + "; ".join(v.message for v in violations) + f" ({exc})"
+            bound = "; ".join(v.message for v in violations)
+            self._last_notes += (f"{projection.describe()} (the code's result broke: {bound})",)
             trajectory = validate_result(projection.trajectory)
             violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations:

@@ -38,6 +38,8 @@ class Settings:
         log: whether exchanges are logged to SQLite.
         isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
         waypoints_in_prompt: send every waypoint, not only the trajectory's summary (longer prompts).
+        project: project a result that breaks the stated constraints onto them (a review note says how
+            far waypoints moved); False sends it back for repair instead.
     """
 
     home: Path = field(default_factory=default_home)
@@ -51,6 +53,7 @@ class Settings:
     log: bool = True
     isolation: str = "auto"
     waypoints_in_prompt: bool = False
+    project: bool = True
 
     @property
     def log_path(self) -> Path:
@@ -73,6 +76,7 @@ ENV_FIELDS = {
     "log": bool,
     "isolation": str,
     "waypoints_in_prompt": bool,
+    "project": bool,
 }
 
 

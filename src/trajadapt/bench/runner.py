@@ -63,6 +63,7 @@ class BenchConfig:
     force: bool = False
     waypoints_in_prompt: bool = False
     isolation: Isolation = "auto"
+    project: bool = True
 
 
 def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
@@ -218,6 +219,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         mode=config.mode,
         repair_attempts=config.repair_attempts,
         waypoints_in_prompt=config.waypoints_in_prompt,
+        project=config.project,
     )
     session = AdaptationSession(loaded, backend, sandbox, settings)
     try:
@@ -227,6 +229,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         record = session.failure(f"{type(exc).__name__}: {exc}").to_dict()
     record["mode"] = config.mode
     record["waypoints_in_prompt"] = config.waypoints_in_prompt
+    record["project"] = config.project
     record["axes"] = config.axes
     record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
     record["evaluation"] = evaluate(

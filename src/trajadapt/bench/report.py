@@ -77,10 +77,51 @@ def summarize(records: list[dict[str, Any]]) -> dict[str, Any]:
                 ]
             ),
         },  # fmt: skip
+        "targets": target_summary(records),
         "backend": records[0]["backend"] if records else None,
         "model": records[0]["model"] if records else None,
         "mode": records[0].get("mode") if records else None,
     }
+
+
+LATTE_METRICS = ("mse", "mae", "dtw", "dfd")
+
+
+def target_summary(records: list[dict[str, Any]]) -> dict[str, Any] | None:
+    """Mean LaTTe metrics of the tool and of copying the input, per subset and overall (None: no targets)."""
+    scored = [r for r in records if r.get("target_scores")]
+    if not scored:
+        return None
+    groups = {
+        name: [r for r in scored if _subset(r) == name] for name in sorted({_subset(r) for r in scored})
+    }
+    return {name: _target_means(group) for name, group in {**groups, "overall": scored}.items()}
+
+
+def _target_means(records: list[dict[str, Any]]) -> dict[str, Any]:
+    means = {
+        who: {
+            metric: float(np.mean([r["target_scores"][who][metric] for r in records]))
+            for metric in LATTE_METRICS
+        }
+        for who in ("tool", "copy")
+    }
+    return {"cases": len(records), **means}
+
+
+def _target_table(targets: dict[str, Any]) -> list[str]:
+    lines = [
+        "",
+        "LaTTe's metrics against the reference targets (mean; lower is better; tool vs copying the input):",
+        "",
+        "| subset | cases | MSE tool | MSE copy | MAE tool | MAE copy | DTW tool | DTW copy | DFD tool "
+        "| DFD copy |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for name, group in targets.items():
+        cells = [f"{_number(group[who][m], 4)}" for m in LATTE_METRICS for who in ("tool", "copy")]
+        lines.append(f"| {name} | {group['cases']} | " + " | ".join(cells) + " |")
+    return lines
 
 
 def _mean(values: list[Any]) -> float | None:
@@ -119,6 +160,7 @@ def render_markdown(summary: dict[str, Any], records: list[dict[str, Any]]) -> s
         f"completion {_number(tokens['completion_mean'], 4)}.",
         f"Shape: median discrete Fréchet {_number(shape['frechet_median'])}, median DTW "
         f"{_number(shape['dtw_median'])}, median roughness ratio {_number(shape['roughness_ratio_median'])}.",
+        *(_target_table(summary["targets"]) if summary.get("targets") else []),
         "",
         "Repair rounds used: " + rounds,
         "",

@@ -23,7 +23,7 @@ import numpy as np
 from trajadapt.backends.base import Backend
 from trajadapt.bench.checks import CheckContext, run_check
 from trajadapt.bench.expectations import EXPECTATIONS_FILENAME, ExpectationSet, find_expectations
-from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, roughness
+from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, latte_scores, roughness
 from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
 from trajadapt.prompts import AXIS_CONVENTIONS
@@ -31,6 +31,7 @@ from trajadapt.results import write_json_atomic
 from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 from trajadapt.skills.core import Axes
+from trajadapt.trajectory import Trajectory, read_json_file
 
 
 @dataclass(frozen=True)
@@ -236,6 +237,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         case, loaded, record, Axes.from_positive_x(AXIS_CONVENTIONS[config.axes].positive_x)
     )
     record["metrics"] = shape_metrics(loaded, record)
+    record["target_scores"] = target_scores(case.path, loaded, record)
     return record
 
 
@@ -297,6 +299,7 @@ def rescore(cases: list[BenchCase], config: BenchConfig) -> int:
         axes = Axes.from_positive_x(AXIS_CONVENTIONS[record.get("axes", config.axes)].positive_x)
         record["evaluation"] = evaluate(case, loaded, record, axes)
         record["metrics"] = shape_metrics(loaded, record)
+        record["target_scores"] = target_scores(case.path, loaded, record)
         write_json_atomic(path, record)
         count += 1
     return count
@@ -318,4 +321,37 @@ def shape_metrics(case: Case, record: dict[str, Any]) -> dict[str, float | None]
         "dtw": dynamic_time_warping(original, adapted),
         "roughness": roughness(adapted),
         "roughness_original": roughness(original),
+    }
+
+
+def target_path(case_path: Path) -> Path | None:
+    """The reference target of a case in the latte-dev layout (``targets/`` beside ``cases/``), if any."""
+    for folder in case_path.parents:
+        if folder.name == "cases" and (folder.parent / "targets").is_dir():
+            candidate = folder.parent / "targets" / case_path.relative_to(folder)
+            return candidate if candidate.is_file() else None
+    return None
+
+
+def target_scores(case_path: Path, case: Case, record: dict[str, Any]) -> dict[str, Any] | None:
+    """LaTTe's metrics of the tool's result and of copying the input, against the case's target.
+
+    A case whose code failed is scored as the path it leaves: the input unchanged.
+
+    Raises:
+        InputError: the target file is not of the documented form.
+    """
+    path = target_path(case_path)
+    if path is None:
+        return None
+    data = read_json_file(path)
+    rows = data.get("output_traj") if isinstance(data, dict) else None
+    target = Trajectory.from_rows(rows, f"{path}: output_traj").array
+    original = case.trajectory.array
+    adapted = record.get("modified_trajectory")
+    prediction = np.asarray(adapted, dtype=np.float64) if adapted else original
+    return {
+        "tool": latte_scores(target, prediction),
+        "copy": latte_scores(target, original),
+        "tool_ran": adapted is not None,
     }

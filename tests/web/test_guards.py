@@ -112,3 +112,9 @@ def test_fifty_parallel_sessions_are_all_logged(tmp_path: Path) -> None:
     finally:
         store.close()
     assert len(set(ids)) == count
+
+
+def test_uploads_nested_too_deep_or_with_huge_integers_are_explained(client: TestClient) -> None:
+    for body in (b"[" * 5000 + b"]" * 5000, b'{"trajectory": [[' + b"9" * 5000 + b", 0, 0, 1]]}"):
+        response = client.post("/api/upload?name=x.json", content=body)
+        assert response.status_code == 400 and "not JSON" in response.json()["error"]

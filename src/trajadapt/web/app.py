@@ -22,6 +22,8 @@ from pydantic import BaseModel
 from trajadapt.case import Case, case_from_dict
 from trajadapt.errors import BackendError, BackendTimeout, InputError, SessionStateError, TrajadaptError
 from trajadapt.safe_text import safe_text
+from trajadapt.scene import NAME_CHARS
+from trajadapt.trajectory import parse_json_text
 from trajadapt.web.guards import (
     LOOPBACK_HOSTS,
     MAX_BODY_BYTES,
@@ -156,10 +158,10 @@ def _case_routes(app: FastAPI, state: ServerState) -> None:
     async def upload(request: Request) -> dict[str, Any]:
         body = await request.body()
         try:
-            data = json.loads(body)
-        except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+            data = parse_json_text(body.decode("utf-8"), "the upload")
+        except (UnicodeDecodeError, InputError) as exc:
             raise InputError(f"the file is not JSON ({exc}); upload a case file in the OVITA format") from exc
-        name = safe_text(Path(request.query_params.get("name", "uploaded")).stem, 200) or "uploaded"
+        name = safe_text(Path(request.query_params.get("name", "uploaded")).stem, NAME_CHARS) or "uploaded"
         uploaded = case_from_dict(data, f"uploaded file {name!r}", name=name)
         return {"name": uploaded.name, **uploaded.to_dict()}
 

@@ -8,11 +8,10 @@ from typing import Any
 
 from trajadapt.errors import InputError
 from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
-from trajadapt.scene import Scene, parse_objects, parse_text_field
+from trajadapt.scene import NAME_CHARS, Scene, parse_objects, parse_text_field
 from trajadapt.trajectory import Trajectory, load_trajectory_file, read_json_file
 
 DESCRIPTION_CHARS = 50_000
-NAME_CHARS = 200
 
 
 @dataclass(frozen=True)

@@ -333,12 +333,12 @@ class AdaptationSession:
         original = self.case.trajectory.array
         violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations and self.settings.project:
+            broken = "; ".join(v.message for v in violations)
             try:
                 projection = project(trajectory.array, original, self.case.scene, limits)
             except DependencyNotInstalled as exc:
-                return "ConstraintViolation: " + "; ".join(v.message for v in violations) + f" ({exc})"
-            bound = "; ".join(v.message for v in violations)
-            self._last_notes += (f"{projection.describe()} (the code's result broke: {bound})",)
+                return f"ConstraintViolation: {broken} ({exc})"
+            self._last_notes += (f"{projection.describe()} (the code's result broke: {broken})",)
             trajectory = validate_result(projection.trajectory)
             violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations:

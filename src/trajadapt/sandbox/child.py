@@ -32,7 +32,6 @@ from trajadapt.sandbox.guard import check_code
 from trajadapt.sandbox.lockdown import RESULT_FD, ChildLimits, lock_down, verified_layers
 from trajadapt.sandbox.protocol import (
     MAX_CHILD_BYTES,
-    MAX_WAYPOINTS,
     ChildResult,
     ProtocolError,
     decode_json,
@@ -43,6 +42,7 @@ from trajadapt.sandbox.protocol import (
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
 from trajadapt.sandbox.rewrite import assign_discarded_results
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
+from trajadapt.trajectory import MAX_WAYPOINTS
 
 GENERATED_FILENAME = "<generated>"
 # Names a small model invents for detect_objects (seen in the benchmark); in skills mode they work too.
@@ -76,17 +76,22 @@ def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> tuple[Chil
         os.close(read_fd)
         _child(job, modules, write_fd)
     os.close(write_fd)
-    payload, timed_out = _read_with_deadline(read_fd, started + float(job["wall_s"]))
+    payload, timed_out = _read_with_deadline(read_fd, started + float(job["wall_s"]))  # None: too large
     if timed_out:
         with contextlib.suppress(ProcessLookupError):
             os.kill(pid, signal.SIGKILL)
     layers = verified_layers(pid)  # before reaping: a zombie's status still shows its layers
     _, status = os.waitpid(pid, 0)
-    result = _decode(payload) if payload else _death_report(status, timed_out, job)
+    if payload is None:
+        result = error_result(
+            "Crash", f"the code's process sent more than {MAX_CHILD_BYTES} bytes; discarded"
+        )
+    else:
+        result = _decode(payload) if payload else _death_report(status, timed_out, job)
     return result, time.perf_counter() - started, layers
 
 
-def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes, bool]:
+def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes | None, bool]:
     chunks: list[bytes] = []
     size = 0
     try:
@@ -102,7 +107,7 @@ def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes, bool]:
                 return b"".join(chunks), False
             size += len(chunk)
             if size > MAX_CHILD_BYTES:
-                return b"x" * (MAX_CHILD_BYTES + 1), False
+                return None, False
             chunks.append(chunk)
     finally:
         os.close(fd)

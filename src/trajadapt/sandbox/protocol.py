@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from trajadapt.safe_text import MESSAGE_CHARS, safe_text
+from trajadapt.trajectory import MAX_WAYPOINTS
 
 MAX_CHILD_BYTES = 16 * 1024 * 1024
 """Largest result a child may write (100,000 waypoints of four numbers fit well within it)."""
@@ -21,7 +22,6 @@ MAX_CHILD_BYTES = 16 * 1024 * 1024
 MAX_ANSWER_CHARS = MAX_CHILD_BYTES + 64 * 1024
 """Largest answer line the host reads from the worker."""
 
-MAX_WAYPOINTS = 100_000
 MAX_NOTES = 20
 MAX_STDOUT_CHARS = 1_000_000
 MAX_LINE = 1_000_000

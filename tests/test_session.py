@@ -216,3 +216,24 @@ def test_invented_detect_names_work_in_skills_mode(simple_case: Case, sandbox: S
     session, _ = make_session(simple_case, sandbox, answer("1) a", code))
     session.draft()
     assert session.approve().ok
+
+
+def test_skills_mode_sends_the_scenes_answer_grammar(simple_case: Case, sandbox: Sandbox) -> None:
+    from trajadapt.answer_grammar import answer_grammar
+
+    code = "t = get_trajectory()\nt = shift(t, 'left', 0.3)\nmodified_trajectory = t"
+    session, backend = make_session(simple_case, sandbox, answer("1) Shift left.", code))
+    session.draft()
+    grammar = backend.requests[0].grammar
+    names = tuple(obj.name for obj in simple_case.scene.objects)
+    assert grammar is not None and grammar == answer_grammar(names).to_gbnf()
+    assert all(f'"{name}"' in grammar for name in names)
+
+
+@pytest.mark.parametrize("settings", [{"mode": "paper"}, {"grammar": False}])
+def test_no_grammar_in_paper_mode_or_when_off(
+    simple_case: Case, sandbox: Sandbox, settings: dict[str, object]
+) -> None:
+    session, backend = make_session(simple_case, sandbox, answer("1) a", SHIFT_LEFT), **settings)
+    session.draft()
+    assert backend.requests[0].grammar is None

@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
+from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
@@ -42,6 +43,8 @@ class SessionSettings:
     ``constraints`` adds the user's limits to those the scene states; a result that breaks them is
     projected onto them (``project``, the default; a review note says what bound it and how far
     waypoints moved), or, with ``project=False``, goes back for repair with the measured numbers.
+    ``grammar`` (skills mode) sends the answer grammar of the case's scene with each request, for
+    backends that can constrain decoding to it (see ``answer_grammar``).
     """
 
     axes: AxisConvention = AXIS_CONVENTIONS["paper"]
@@ -55,6 +58,7 @@ class SessionSettings:
     max_tokens: int = 1024
     seed: int | None = 0
     waypoints_in_prompt: bool = False
+    grammar: bool = True
 
 
 @dataclass(frozen=True)
@@ -290,6 +294,7 @@ class AdaptationSession:
             temperature=self.settings.temperature,
             max_tokens=self.settings.max_tokens,
             seed=self.settings.seed,
+            grammar=self._answer_grammar(),
         )
         started = time.perf_counter()
         completion = self.backend.complete(request)
@@ -298,6 +303,11 @@ class AdaptationSession:
         self._tokens["prompt"] += completion.usage.prompt_tokens or 0
         self._tokens["completion"] += completion.usage.completion_tokens or 0
         return completion
+
+    def _answer_grammar(self) -> str | None:
+        if self.settings.mode != "skills" or not self.settings.grammar:
+            return None
+        return answer_grammar(tuple(obj.name for obj in self.case.scene.objects)).to_gbnf()
 
     def _execute(self, plan: Plan) -> Trajectory | str:
         skills = self.settings.mode == "skills"

@@ -219,3 +219,23 @@ def test_bench_with_two_model_processes_gives_the_serial_results(
     )
     assert [r["code"] for r in serial] == [r["code"] for r in parallel]
     assert [r["modified_trajectory"] for r in serial] == [r["modified_trajectory"] for r in parallel]
+
+
+@pytest.mark.skipif(importlib.util.find_spec("llama_cpp") is None, reason="llama-cpp-python not installed")
+def test_a_request_grammar_constrains_decoding_unless_turned_off() -> None:
+    from dataclasses import replace
+
+    from llama_cpp.llama_grammar import LlamaGrammar
+
+    from trajadapt.answer_grammar import answer_grammar
+
+    request = replace(REQUEST, grammar=answer_grammar(("box",)).to_gbnf())
+    fake = FakeLlama("{}")
+    backend = LocalBackend(LocalOptions(json_schema=True), llama=fake)
+    backend.complete(request)
+    backend.complete(request)
+    assert isinstance(fake.calls[0]["grammar"], LlamaGrammar) and "response_format" not in fake.calls[0]
+    assert fake.calls[1]["grammar"] is fake.calls[0]["grammar"]  # parsed once per scene
+    free = FakeLlama("{}")
+    LocalBackend(LocalOptions(grammar=False), llama=free).complete(request)
+    assert "grammar" not in free.calls[0]

@@ -34,6 +34,8 @@ class ChatRequest:
     max_tokens: int = 1024
     seed: int | None = 0
     json_schema: Mapping[str, Any] | None = None
+    grammar: str | None = None
+    """GBNF text the answer must follow (llama.cpp's constrained decoding); ignored where unsupported."""
 
 
 @dataclass(frozen=True)

@@ -35,6 +35,8 @@ class LocalOptions:
             answers at temperature 0; off by default).
         n_ctx: context window in tokens.
         json_schema: constrain the answer to the plan/code JSON schema (slower per token).
+        grammar: follow the request's grammar when it has one (skills mode: an answer made of this
+            scene's objects and the skill library's calls); off: decode freely.
         prompt_cache: save llama.cpp's state after the fixed prompt to disk, so that a new process
             does not read the whole prompt again.
     """
@@ -46,6 +48,7 @@ class LocalOptions:
     flash_attn: bool = False
     n_ctx: int = 4096
     json_schema: bool = False
+    grammar: bool = True
     prompt_cache: bool = True
 
 
@@ -135,6 +138,7 @@ class LocalBackend(Backend):
         super().__init__(options)
         self._llama = llama
         self._lock = threading.Lock()  # one llama.cpp context: one request at a time
+        self._grammars: dict[str, Any] = {}
 
     @property
     def model(self) -> str:
@@ -235,6 +239,20 @@ class LocalBackend(Backend):
             },
         )
 
+    def _compiled(self, grammar: str) -> Any:
+        """llama.cpp's parsed grammar for this text, kept for the next request of the same scene."""
+        if grammar not in self._grammars:
+            from llama_cpp.llama_grammar import LlamaGrammar
+
+            try:
+                compiled = LlamaGrammar.from_string(grammar, verbose=False)
+            except ValueError as exc:
+                raise BackendRejected(f"llama.cpp cannot read the answer grammar: {exc}") from exc
+            if len(self._grammars) >= 32:
+                self._grammars.pop(next(iter(self._grammars)))
+            self._grammars[grammar] = compiled
+        return self._grammars[grammar]
+
     def _stream(self, llama: Any, request: ChatRequest) -> tuple[list[str], float]:
         arguments: dict[str, Any] = {
             "messages": [{"role": m.role, "content": m.content} for m in request.messages],
@@ -243,7 +261,9 @@ class LocalBackend(Backend):
             "seed": request.seed if request.seed is not None else -1,
             "stream": True,
         }
-        if self.options.json_schema:
+        if self.options.grammar and request.grammar:
+            arguments["grammar"] = self._compiled(request.grammar)
+        elif self.options.json_schema:
             arguments["response_format"] = {"type": "json_object", "schema": ANSWER_SCHEMA}
         started = time.perf_counter()
         first_token_s = 0.0

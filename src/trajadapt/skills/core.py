@@ -8,12 +8,35 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Annotated, Any
 
 import numpy as np
 import numpy.typing as npt
 
 Array = npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class ArgKind:
+    """What a skill parameter accepts, beyond its Python type: read by the answer grammar.
+
+    Kinds: trajectory, point, points, direction, distance (a number or an amount word), fraction
+    (0..1 or a closeness word), part (a word or a pair), waypoint (an index, a word or a point),
+    profile (a speed-profile name). Plain ``float``, ``int`` and ``bool`` parameters need no kind.
+    """
+
+    name: str
+
+
+TrajectoryArg = Annotated[Any, ArgKind("trajectory")]
+PointArg = Annotated[Any, ArgKind("point")]
+PointsArg = Annotated[Any, ArgKind("points")]
+DirectionArg = Annotated[str, ArgKind("direction")]
+DistanceArg = Annotated[Any, ArgKind("distance")]
+FractionArg = Annotated[Any, ArgKind("fraction")]
+PartArg = Annotated[Any, ArgKind("part")]
+WaypointArg = Annotated[Any, ArgKind("waypoint")]
+ProfileArg = Annotated[str, ArgKind("profile")]
 
 # Vague amount words, as fractions of the trajectory's size (largest side of its bounding box).
 AMOUNT_WORDS = {
@@ -62,6 +85,9 @@ class Axes:
 
 
 PAPER_AXES = Axes()
+
+DIRECTIONS = ("left", "right", "front", "back", "up", "down")
+"""The canonical direction words (DIRECTION_SYNONYMS maps every other word onto one of them)."""
 
 RELATIVE_WORDS = ("away", "further", "farther", "closer", "towards", "toward", "near", "nearer")
 

@@ -10,6 +10,11 @@ from trajadapt.skills.core import (
     PAPER_AXES,
     Array,
     Axes,
+    DirectionArg,
+    DistanceArg,
+    PointArg,
+    TrajectoryArg,
+    WaypointArg,
     as_point,
     as_trajectory,
     extent,
@@ -17,18 +22,15 @@ from trajadapt.skills.core import (
     resolve_amount,
 )
 
+POSITION_WORDS = ("start", "beginning", "middle", "center", "goal", "end")
+"""Words that name a waypoint of the path."""
+
 
 def _index(t: Array, at: Any) -> int:
     """A waypoint index from an index, 'start'/'middle'/'goal', or a point (its nearest waypoint)."""
     if isinstance(at, str):
-        words = {
-            "start": 0,
-            "beginning": 0,
-            "middle": len(t) // 2,
-            "center": len(t) // 2,
-            "goal": len(t) - 1,
-            "end": len(t) - 1,
-        }
+        last, middle = len(t) - 1, len(t) // 2
+        words = dict(zip(POSITION_WORDS, (0, 0, middle, middle, last, last), strict=True))
         if at.strip().lower() not in words:
             raise ValueError(
                 f"unknown position {at!r}; use an index, a point (for an object: detect_objects({at!r})), "
@@ -40,7 +42,7 @@ def _index(t: Array, at: Any) -> int:
     return nearest_index(t, at)
 
 
-def stop_at(trajectory: Any, point: Any) -> Array:
+def stop_at(trajectory: TrajectoryArg, point: PointArg) -> Array:
     """End the trajectory at the waypoint nearest to point (later waypoints removed, velocity 0 there)."""
     t = as_trajectory(trajectory)
     k = max(nearest_index(t, point), 1)
@@ -49,7 +51,7 @@ def stop_at(trajectory: Any, point: Any) -> Array:
     return stopped
 
 
-def wait(trajectory: Any, at: Any, steps: int) -> Array:
+def wait(trajectory: TrajectoryArg, at: WaypointArg, steps: int) -> Array:
     """Pause steps timesteps at a waypoint (an index, 'start', 'middle', 'goal', or a point).
 
     Pause for steps timesteps at a waypoint (an index, 'start', 'middle', 'goal', or a point): inserts
@@ -74,9 +76,9 @@ HEADING_WORDS = frozenset({"", "goal", "heading", "straight", "along", "same", "
 
 
 def extend(
-    trajectory: Any,
-    distance: Any = None,
-    direction: str | None = None,
+    trajectory: TrajectoryArg,
+    distance: DistanceArg = None,
+    direction: DirectionArg | None = None,
     count: int = 10,
     *,
     axes: Axes = PAPER_AXES,
@@ -102,7 +104,7 @@ def _final_heading(t: Array) -> Array:
     raise ValueError("the trajectory does not move, so it has no final heading; give a direction")
 
 
-def append_segment(trajectory: Any, point: Any, count: int = 10) -> Array:
+def append_segment(trajectory: TrajectoryArg, point: PointArg, count: int = 10) -> Array:
     """After the goal, go on in a straight line to point, adding count waypoints (the robot stops there)."""
     t = as_trajectory(trajectory)
     target = as_point(point)
@@ -117,10 +119,10 @@ def append_segment(trajectory: Any, point: Any, count: int = 10) -> Array:
 
 
 def spiral(
-    trajectory: Any,
-    max_radius: Any = None,
+    trajectory: TrajectoryArg,
+    max_radius: DistanceArg = None,
     turns: float = 3.0,
-    at: Any = "goal",
+    at: WaypointArg = "goal",
     count: int = 60,
     *,
     axes: Axes = PAPER_AXES,
@@ -140,9 +142,9 @@ def spiral(
 
 
 def circle_around(
-    trajectory: Any,
-    center: Any,
-    radius: Any = None,
+    trajectory: TrajectoryArg,
+    center: PointArg,
+    radius: DistanceArg = None,
     turns: float = 1.0,
     count: int = 40,
     *,

@@ -12,6 +12,11 @@ import numpy as np
 
 from trajadapt.skills.core import (
     Array,
+    DistanceArg,
+    FractionArg,
+    PointArg,
+    PointsArg,
+    TrajectoryArg,
     as_point,
     as_trajectory,
     extent,
@@ -48,7 +53,7 @@ def _weight(t: Array, point: Array) -> Array:
     return proximity(t, point, INFLUENCE * extent(t)) * ends
 
 
-def move_closer(trajectory: Any, point: Any, amount: Any = None) -> Array:
+def move_closer(trajectory: TrajectoryArg, point: PointArg, amount: FractionArg = None) -> Array:
     """Bring the path closer to a point; amount is a fraction 0..1 or 'a bit' / 'a lot'.
 
     Bring the path closer to a point: the nearest part moves amount (fraction 0..1, or 'a bit', 'a lot')
@@ -61,7 +66,7 @@ def move_closer(trajectory: Any, point: Any, amount: Any = None) -> Array:
     return t
 
 
-def move_away(trajectory: Any, point: Any, amount: Any = None) -> Array:
+def move_away(trajectory: TrajectoryArg, point: PointArg, amount: DistanceArg = None) -> Array:
     """Push the path away from a point by amount (a distance, or 'a bit' / 'a lot').
 
     Push the path away from a point by amount (a distance, or 'a bit', 'a lot'); the nearest part moves
@@ -76,7 +81,7 @@ def move_away(trajectory: Any, point: Any, amount: Any = None) -> Array:
     return t
 
 
-def avoid(trajectory: Any, points: Any, clearance: float, iterations: int = 50) -> Array:
+def avoid(trajectory: TrajectoryArg, points: PointsArg, clearance: float, iterations: int = 50) -> Array:
     """Give a point or a list of points a clearance: every waypoint at least clearance away.
 
     Make every waypoint at least clearance away from each point (one point or a list of points),
@@ -164,7 +169,9 @@ def _spread(push: Array) -> Array:
     return spread * (peak / largest) if largest > 0 else spread
 
 
-def pass_through(trajectory: Any, point: Any, index: int | None = None, width: float = 0.25) -> Array:
+def pass_through(
+    trajectory: TrajectoryArg, point: PointArg, index: int | None = None, width: float = 0.25
+) -> Array:
     """Bend the path so that it passes exactly through point (e.g. an object or a midpoint).
 
     Bend the path so that it passes exactly through point, at the given waypoint index (default: the
@@ -191,7 +198,7 @@ def pass_through(trajectory: Any, point: Any, index: int | None = None, width: f
     return t
 
 
-def reach(trajectory: Any, point: Any) -> Array:
+def reach(trajectory: TrajectoryArg, point: PointArg) -> Array:
     """Make the path end at point instead of the old goal; the start stays and the path bends smoothly."""
     t = as_trajectory(trajectory)
     offset = as_point(point) - t[-1, :3]
@@ -199,11 +206,11 @@ def reach(trajectory: Any, point: Any) -> Array:
     return t
 
 
-def midpoint(first: Any, second: Any) -> Array:
+def midpoint(first: PointArg, second: PointArg) -> Array:
     """The point halfway between two points (e.g. two objects)."""
     return (as_point(first, "first") + as_point(second, "second")) / 2.0
 
 
-def closest_waypoint(trajectory: Any, point: Any) -> int:
+def closest_waypoint(trajectory: TrajectoryArg, point: PointArg) -> int:
     """The index of the waypoint nearest to point."""
     return nearest_index(as_trajectory(trajectory), point)

@@ -7,14 +7,17 @@ Changes blend in smoothly, and the start stays where it is unless the function i
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
 from trajadapt.skills.core import (
     PAPER_AXES,
     Array,
     Axes,
+    DirectionArg,
+    DistanceArg,
+    PartArg,
+    PointArg,
+    TrajectoryArg,
     as_point,
     as_trajectory,
     bump,
@@ -28,7 +31,9 @@ from trajadapt.skills.core import (
 BLEND_IN = 0.25  # fraction of the path over which a shift of the whole path is blended in
 
 
-def shift(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+def shift(
+    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Move the path in a direction by amount, keeping the start (blended in over the first quarter).
 
     Args:
@@ -43,7 +48,9 @@ def shift(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = P
     return t
 
 
-def shift_goal(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+def shift_goal(
+    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Move the goal in a direction by amount; the start stays and the path bends smoothly towards it."""
     t = as_trajectory(trajectory)
     offset = axes.vector(direction) * resolve_amount(amount, t)
@@ -51,7 +58,9 @@ def shift_goal(trajectory: Any, direction: str, amount: Any = None, *, axes: Axe
     return t
 
 
-def shift_start(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+def shift_start(
+    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Move the start in a direction by amount; the goal stays and the change fades out along the path."""
     t = as_trajectory(trajectory)
     offset = axes.vector(direction) * resolve_amount(amount, t)
@@ -60,7 +69,12 @@ def shift_start(trajectory: Any, direction: str, amount: Any = None, *, axes: Ax
 
 
 def shift_part(
-    trajectory: Any, direction: str, amount: Any = None, part: Any = "middle", *, axes: Axes = PAPER_AXES
+    trajectory: TrajectoryArg,
+    direction: DirectionArg,
+    amount: DistanceArg = None,
+    part: PartArg = "middle",
+    *,
+    axes: Axes = PAPER_AXES,
 ) -> Array:
     """Move one part of the path ('start', 'middle', 'end', a fraction pair or index pair) smoothly."""
     t = as_trajectory(trajectory)
@@ -69,7 +83,9 @@ def shift_part(
     return t
 
 
-def set_height(trajectory: Any, height: float, keep_start: bool = True, keep_goal: bool = True) -> Array:
+def set_height(
+    trajectory: TrajectoryArg, height: float, keep_start: bool = True, keep_goal: bool = True
+) -> Array:
     """Fly the path at a constant height z, blending from/to the start and goal if they are kept."""
     t = as_trajectory(trajectory)
     s = progress(t)
@@ -83,7 +99,12 @@ def set_height(trajectory: Any, height: float, keep_start: bool = True, keep_goa
 
 
 def keep_side(
-    trajectory: Any, side: str, point: Any, margin: float = 0.0, *, axes: Axes = PAPER_AXES
+    trajectory: TrajectoryArg,
+    side: DirectionArg,
+    point: PointArg,
+    margin: float = 0.0,
+    *,
+    axes: Axes = PAPER_AXES,
 ) -> Array:
     """Keep every waypoint on one side ('left', 'right', 'front', 'back', 'up', 'down') of a point.
 
@@ -97,21 +118,23 @@ def keep_side(
     return t
 
 
-def stay_above(trajectory: Any, height: float) -> Array:
+def stay_above(trajectory: TrajectoryArg, height: float) -> Array:
     """Raise any waypoint below height z up to it."""
     t = as_trajectory(trajectory)
     t[:, 2] = np.maximum(t[:, 2], float(height))
     return t
 
 
-def stay_below(trajectory: Any, height: float) -> Array:
+def stay_below(trajectory: TrajectoryArg, height: float) -> Array:
     """Lower any waypoint above height z down to it."""
     t = as_trajectory(trajectory)
     t[:, 2] = np.minimum(t[:, 2], float(height))
     return t
 
 
-def rotate(trajectory: Any, degrees: float, center: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+def rotate(
+    trajectory: TrajectoryArg, degrees: float, center: PointArg = None, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Turn the path by degrees about a vertical axis; positive is clockwise seen from above.
 
     Turn the path about the vertical axis through center (default: the start); positive is clockwise
@@ -129,7 +152,7 @@ def rotate(trajectory: Any, degrees: float, center: Any = None, *, axes: Axes = 
     return t
 
 
-def scale_about(trajectory: Any, point: Any, factor: float, keep_ends: bool = True) -> Array:
+def scale_about(trajectory: TrajectoryArg, point: PointArg, factor: float, keep_ends: bool = True) -> Array:
     """Multiply each waypoint's distance from point by factor (2 = twice as far), ends kept by default."""
     t = as_trajectory(trajectory)
     center = as_point(point)
@@ -138,7 +161,7 @@ def scale_about(trajectory: Any, point: Any, factor: float, keep_ends: bool = Tr
     return t
 
 
-def exaggerate_curve(trajectory: Any, factor: float = 1.5) -> Array:
+def exaggerate_curve(trajectory: TrajectoryArg, factor: float = 1.5) -> Array:
     """Scale how far the path bends away from the straight start-goal line (factor > 1: more curved)."""
     t = as_trajectory(trajectory)
     start, goal = t[0, :3], t[-1, :3]
@@ -148,7 +171,9 @@ def exaggerate_curve(trajectory: Any, factor: float = 1.5) -> Array:
     return t
 
 
-def zigzag(trajectory: Any, amplitude: Any = None, cycles: int = 4, *, axes: Axes = PAPER_AXES) -> Array:
+def zigzag(
+    trajectory: TrajectoryArg, amplitude: DistanceArg = None, cycles: int = 4, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Add a sideways zig-zag (triangle wave) across the direction of travel; start and goal stay."""
     t = as_trajectory(trajectory)
     size = resolve_amount(amplitude, t, default_word="a bit")
@@ -168,7 +193,7 @@ def _sideways(t: Array, axes: Axes) -> Array:
     return np.where(norms > 1e-12, across / np.maximum(norms, 1e-12), fallback)
 
 
-def smooth(trajectory: Any, strength: float = 0.5) -> Array:
+def smooth(trajectory: TrajectoryArg, strength: float = 0.5) -> Array:
     """Round off sharp turns and jitter (strength 0..1); start and goal stay; speeds smoothed too."""
     t = as_trajectory(trajectory)
     sigma = max(float(strength), 0.0) * max(len(t) / 20.0, 1.0)
@@ -184,7 +209,7 @@ def smooth(trajectory: Any, strength: float = 0.5) -> Array:
     return smoothed
 
 
-def resample(trajectory: Any, count: int) -> Array:
+def resample(trajectory: TrajectoryArg, count: int) -> Array:
     """The same path with count waypoints, evenly spaced along it (positions and speeds interpolated)."""
     t = as_trajectory(trajectory)
     count = int(count)
@@ -195,7 +220,7 @@ def resample(trajectory: Any, count: int) -> Array:
     return np.stack([np.interp(target, s, t[:, k]) for k in range(4)], axis=1)
 
 
-def add_noise(trajectory: Any, scale: Any = "tiny", seed: int = 0) -> Array:
+def add_noise(trajectory: TrajectoryArg, scale: DistanceArg = "tiny", seed: int = 0) -> Array:
     """Add small random (Gaussian) offsets to the positions; start and goal stay."""
     t = as_trajectory(trajectory)
     sigma = resolve_amount(scale, t)
@@ -210,7 +235,9 @@ def _ends_fade(t: Array) -> Array:
     return smoothstep(s / 0.1) * smoothstep((1.0 - s) / 0.1)
 
 
-def lift_middle(trajectory: Any, direction: str, amount: Any = None, *, axes: Axes = PAPER_AXES) -> Array:
+def lift_middle(
+    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+) -> Array:
     """Bow the middle of the path in a direction (start and goal stay), e.g. 'go to the top part'."""
     t = as_trajectory(trajectory)
     offset = axes.vector(direction) * resolve_amount(amount, t)
@@ -218,6 +245,6 @@ def lift_middle(trajectory: Any, direction: str, amount: Any = None, *, axes: Ax
     return t
 
 
-def path_size(trajectory: Any) -> float:
+def path_size(trajectory: TrajectoryArg) -> float:
     """The largest side of the path's bounding box, to express amounts relative to the path."""
     return extent(as_trajectory(trajectory))

@@ -12,6 +12,10 @@ import numpy as np
 
 from trajadapt.skills.core import (
     Array,
+    PartArg,
+    PointArg,
+    ProfileArg,
+    TrajectoryArg,
     as_point,
     as_trajectory,
     extent,
@@ -20,6 +24,8 @@ from trajadapt.skills.core import (
     proximity,
     within,
 )
+
+PROFILES = ("constant", "trapezoidal", "accelerate", "decelerate")
 
 NEAR_REACH = 0.2  # how far (fraction of the path's size) "near an object" reaches beyond the closest pass
 
@@ -44,7 +50,11 @@ def speed_weight(trajectory: Any, near: Any = None, radius: float | None = None,
 
 
 def scale_speed(
-    trajectory: Any, factor: float, near: Any = None, radius: float | None = None, part: Any = None
+    trajectory: TrajectoryArg,
+    factor: float,
+    near: PointArg = None,
+    radius: float | None = None,
+    part: PartArg = None,
 ) -> Array:
     """Multiply velocity by factor (0.5 half, 2 double): everywhere, near a point, or in a part.
 
@@ -60,7 +70,11 @@ def scale_speed(
 
 
 def set_speed(
-    trajectory: Any, speed: float, near: Any = None, radius: float | None = None, part: Any = None
+    trajectory: TrajectoryArg,
+    speed: float,
+    near: PointArg = None,
+    radius: float | None = None,
+    part: PartArg = None,
 ) -> Array:
     """Set the velocity to speed, everywhere or only near a point / within radius of it / in a part."""
     t = as_trajectory(trajectory)
@@ -71,7 +85,9 @@ def set_speed(
     return t
 
 
-def speed_profile(trajectory: Any, kind: str, peak: float | None = None, start: float = 0.0) -> Array:
+def speed_profile(
+    trajectory: TrajectoryArg, kind: ProfileArg, peak: float | None = None, start: float = 0.0
+) -> Array:
     """Velocity profile 'constant', 'trapezoidal', 'accelerate' or 'decelerate' from fraction start.
 
     Replace the velocity by a profile: 'constant', 'trapezoidal' (speed up, cruise, slow down),
@@ -91,8 +107,8 @@ def speed_profile(trajectory: Any, kind: str, peak: float | None = None, start: 
         "decelerate": entry * (1.0 - local),
     }
     key = str(kind).strip().lower()
-    if key not in profiles:
-        raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(profiles)}")
+    if key not in PROFILES:
+        raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(PROFILES)}")
     after = s >= begin
     t[after, 3] = np.maximum(profiles[key][after], 0.0)
     return t

@@ -71,3 +71,62 @@ def test_an_unknown_axes_variable_fails_the_command_in_words(
     result = CliRunner().invoke(cli, ["adapt", str(tmp_path / "absent.json"), "-b", "scripted", "--yes"])
     assert result.exit_code == 1
     assert "axes 'foo' is not one of" in result.output and "Traceback" not in result.output
+
+
+ENVIRONMENT = {
+    "AXES": "ovita",
+    "MODE": "paper",
+    "TEMPERATURE": "0.5",
+    "SEED": "7",
+    "REPAIR_ATTEMPTS": "1",
+    "WAYPOINTS_IN_PROMPT": "yes",
+    "PROJECT": "no",
+    "GRAMMAR": "off",
+    "EXAMPLES": "5",
+}
+SEEN = {
+    "axes": "ovita",
+    "mode": "paper",
+    "temperature": 0.5,
+    "seed": 7,
+    "repair_attempts": 1,
+    "waypoints_in_prompt": True,
+    "project": False,
+    "grammar": False,
+    "examples": 5,
+}
+
+
+def test_every_variable_reaches_the_session(home: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from trajadapt.session import SessionSettings
+    from trajadapt.settings import ENV_FIELDS
+
+    for name, value in ENVIRONMENT.items():
+        monkeypatch.setenv(f"TRAJADAPT_{name}", value)
+    assert set(ENV_FIELDS) - {"backend", "log", "isolation"} == set(SEEN)
+    described = SessionSettings.from_settings(load_settings()).describe()
+    assert {key: described[key] for key in SEEN} == SEEN
+
+
+def test_bench_sees_the_environment(home: Path, monkeypatch: pytest.MonkeyPatch, ovita_dir: Path) -> None:
+    import json
+
+    from click.testing import CliRunner
+
+    from trajadapt.cli import cli
+
+    for name, value in ENVIRONMENT.items():
+        monkeypatch.setenv(f"TRAJADAPT_{name}", value)
+    answers = home / "answers.json"
+    keep = json.dumps(
+        {"high_level_plan": "1) Keep.", "python_code": "modified_trajectory = get_trajectory()"}
+    )
+    answers.write_text(json.dumps([keep]))
+    case = ovita_dir / "latte_subset" / "latte_32.json"
+    out = home / "out"
+    result = CliRunner().invoke(
+        cli, ["bench", str(case), "-b", "scripted", "-o", "answers", str(answers), "--out", str(out)]
+    )
+    assert result.exit_code == 0, result.output
+    record = json.loads(next(out.rglob("*.result.json")).read_text())
+    assert {key: record["settings"][key] for key in SEEN} == SEEN

@@ -16,7 +16,15 @@ from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
-from trajadapt.cli_common import backend_option, backend_options, isolation_of, make_backend, option_option
+from trajadapt.cli_common import (
+    backend_option,
+    backend_options,
+    examples_option,
+    grammar_option,
+    isolation_of,
+    make_backend,
+    option_option,
+)
 from trajadapt.cli_robots import ROBOT_NAMES, plan, run_and_report, simulate
 from trajadapt.cli_serve import serve
 from trajadapt.console import CaseProgress, Progress, show_plan, show_result
@@ -115,6 +123,8 @@ def cli(debug: bool) -> None:
     default=None,
     help="Prompt mode: skills (default; the skill library) or paper (the paper's prompt).",
 )
+@examples_option
+@grammar_option
 @click.option(
     "--temperature", type=float, default=None, help="Sampling temperature (default 0: deterministic)."
 )
@@ -150,6 +160,8 @@ def adapt(
     axes: str | None,
     repairs: int | None,
     mode: str | None,
+    examples: int | None,
+    grammar: bool | None,
     temperature: float | None,
     seed: int | None,
     project_onto: bool | None,
@@ -163,7 +175,7 @@ def adapt(
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
-                 "project": project_onto}  # fmt: skip
+                 "project": project_onto, "examples": examples, "grammar": grammar}  # fmt: skip
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction)
     chosen = make_backend(settings, options, model_path)
@@ -205,16 +217,7 @@ def _run_session(
     case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints
 ) -> AdaptationResult:
     store = Store(settings.log_path) if settings.log else None
-    session_settings = SessionSettings(
-        axes=AXIS_CONVENTIONS[settings.axes],
-        mode=settings.mode,
-        repair_attempts=settings.repair_attempts,
-        temperature=settings.temperature,
-        seed=settings.seed,
-        waypoints_in_prompt=settings.waypoints_in_prompt,
-        constraints=limits,
-        project=settings.project,
-    )
+    session_settings = SessionSettings.from_settings(settings, limits)
     try:
         with Sandbox(isolation=isolation_of(settings)) as sandbox, Progress() as progress:
             session = AdaptationSession(case, backend, sandbox, session_settings, store, progress.update)
@@ -269,10 +272,11 @@ def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settin
 @click.option(
     "--mode",
     type=click.Choice(PROMPT_MODES),
-    default="skills",
-    show_default=True,
-    help="skills: the prompt lists the skill library; paper: only get_trajectory/detect_objects.",
+    default=None,
+    help="skills (default): the prompt lists the skill library; paper: only get_trajectory/detect_objects.",
 )
+@examples_option
+@grammar_option
 @click.option(
     "--out",
     "out_dir",
@@ -316,7 +320,9 @@ def bench(
     cases: tuple[Path, ...],
     backend: str | None,
     options: tuple[tuple[str, str], ...],
-    mode: str,
+    mode: str | None,
+    examples: int | None,
+    grammar: bool | None,
     out_dir: Path | None,
     jobs: int,
     force: bool,
@@ -339,19 +345,18 @@ def bench(
             "repair_attempts": repairs,
             "waypoints_in_prompt": waypoints_in_prompt,
             "project": project_onto,
+            "mode": mode,
+            "examples": examples,
+            "grammar": grammar,
         }
     )
     found = discover_cases(list(cases), expectations)
     config = BenchConfig(
-        out_dir or Path("bench-out") / mode,
-        mode,
-        settings.axes,
-        settings.repair_attempts,
-        jobs,
-        force,
-        settings.waypoints_in_prompt,
-        isolation_of(settings),
-        settings.project,
+        out_dir or Path("bench-out") / settings.mode,
+        SessionSettings.from_settings(settings),
+        jobs=jobs,
+        force=force,
+        isolation=isolation_of(settings),
     )
     if rescore:
         click.echo(f"judged {rescore_results(found, config)} stored result(s) again")
@@ -361,7 +366,8 @@ def bench(
     chosen = make_backend(settings, options)
     todo = sum(1 for case in found if force or not result_path(config, case).is_file())
     click.echo(
-        f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {mode} -> {config.out_dir}"
+        f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {settings.mode}, "
+        f"{settings.examples} example(s), grammar {'on' if settings.grammar else 'off'} -> {config.out_dir}"
     )
     try:
         with CaseProgress(todo) as progress:

@@ -20,6 +20,15 @@ option_option = click.option(
     "--option", "-o", "options", type=(str, str), multiple=True, metavar="KEY VALUE",
     help="Backend option, e.g. -o base_url http://127.0.0.1:11434/v1 -o model qwen2.5-coder.",
 )  # fmt: skip
+examples_option = click.option(
+    "--examples", type=click.IntRange(0, 12), default=None, metavar="K",
+    help="Worked examples nearest to the instruction put into the prompt (skills mode; default 3).",
+)  # fmt: skip
+grammar_option = click.option(
+    "--grammar/--free-decoding", "grammar", default=None,
+    help="Constrain a local model's answer to the skill calls and object names of the scene (skills "
+    "mode; the default), or let it write any code.",
+)  # fmt: skip
 
 
 def backend_options(pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:

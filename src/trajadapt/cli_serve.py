@@ -102,15 +102,7 @@ def _build_app(
         raise InputError(f"--cases {cases_dir}: not a folder")
     settings = load_settings({"backend": backend, "mode": mode, "axes": axes})
     convention = AXIS_CONVENTIONS[settings.axes]
-    session_settings = SessionSettings(
-        axes=convention,
-        mode=settings.mode,
-        repair_attempts=settings.repair_attempts,
-        temperature=settings.temperature,
-        seed=settings.seed,
-        waypoints_in_prompt=settings.waypoints_in_prompt,
-        project=settings.project,
-    )
+    session_settings = SessionSettings.from_settings(settings)
     services = Services(
         backend=make_backend(settings, options, model_path),
         sandbox=Sandbox(isolation=isolation_of(settings)),

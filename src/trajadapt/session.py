@@ -29,6 +29,7 @@ from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
+from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
@@ -59,6 +60,38 @@ class SessionSettings:
     seed: int | None = 0
     waypoints_in_prompt: bool = False
     grammar: bool = True
+    examples: int = 3
+
+    @classmethod
+    def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
+        """The one way from the user's settings (config, environment, flags) to a session's."""
+        return cls(
+            axes=AXIS_CONVENTIONS[settings.axes],
+            mode=settings.mode,
+            repair_attempts=settings.repair_attempts,
+            constraints=constraints,
+            project=settings.project,
+            temperature=settings.temperature,
+            seed=settings.seed,
+            waypoints_in_prompt=settings.waypoints_in_prompt,
+            grammar=settings.grammar,
+            examples=settings.examples,
+        )
+
+    def describe(self) -> dict[str, Any]:
+        """What reproduces a run, for result files and the log."""
+        return {
+            "mode": self.mode,
+            "axes": self.axes.name,
+            "temperature": self.temperature,
+            "seed": self.seed,
+            "max_tokens": self.max_tokens,
+            "repair_attempts": self.repair_attempts,
+            "waypoints_in_prompt": self.waypoints_in_prompt,
+            "project": self.project,
+            "grammar": self.grammar,
+            "examples": self.examples,
+        }
 
 
 @dataclass(frozen=True)
@@ -105,6 +138,7 @@ class AdaptationResult:
     notes: tuple[ReviewNote, ...] = ()
     stdout: str = ""
     tokens: dict[str, int] = field(default_factory=dict)
+    settings: dict[str, Any] = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -131,6 +165,7 @@ class AdaptationResult:
             "tokens": self.tokens,
             "review_notes": [note.message for note in self.notes],
             "stdout": self.stdout,
+            "settings": self.settings,
         }
 
 
@@ -170,7 +205,13 @@ class AdaptationSession:
         self.on_progress = on_progress or (lambda _message: None)
         self.turns: list[Turn] = []
         self.messages: list[ChatMessage] = list(
-            first_messages(case, self.settings.axes, self.settings.mode, self.settings.waypoints_in_prompt)
+            first_messages(
+                case,
+                self.settings.axes,
+                self.settings.mode,
+                self.settings.waypoints_in_prompt,
+                self.settings.examples,
+            )
         )
         self.session_id: str | None = None
         self._llm_s = 0.0
@@ -375,6 +416,7 @@ class AdaptationSession:
             notes=self._notes(trajectory),
             stdout=self._last_stdout,
             tokens=dict(self._tokens),
+            settings=self.settings.describe(),
         )
 
     def _notes(self, trajectory: Trajectory | None) -> tuple[ReviewNote, ...]:

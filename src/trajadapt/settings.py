@@ -40,6 +40,8 @@ class Settings:
         waypoints_in_prompt: send every waypoint, not only the trajectory's summary (longer prompts).
         project: project a result that breaks the stated constraints onto them (a review note says how
             far waypoints moved); False sends it back for repair instead.
+        grammar: in skills mode, constrain a local model's answer to the scene's answer grammar.
+        examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
     """
 
     home: Path = field(default_factory=default_home)
@@ -54,6 +56,8 @@ class Settings:
     isolation: str = "auto"
     waypoints_in_prompt: bool = False
     project: bool = True
+    grammar: bool = True
+    examples: int = 3
 
     @property
     def log_path(self) -> Path:
@@ -77,6 +81,8 @@ ENV_FIELDS = {
     "isolation": str,
     "waypoints_in_prompt": bool,
     "project": bool,
+    "grammar": bool,
+    "examples": int,
 }
 
 

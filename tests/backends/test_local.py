@@ -17,7 +17,7 @@ from trajadapt.case import Case
 from trajadapt.errors import EmptyCompletion
 from trajadapt.model_file import PINNED_SHA256, ensure_model, verify_model_file
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.session import AdaptationSession
+from trajadapt.session import AdaptationSession, SessionSettings
 
 
 class FakeLlama:
@@ -210,12 +210,20 @@ def test_bench_with_two_model_processes_gives_the_serial_results(
     )
     # Both runs start from the saved prompt state: a fresh context reads the fixed prefix together with
     # the first case in one batch, which can tip a near-tie token (seen: set_speed 0.5 vs 0.6).
-    run_benchmark(cases[:1], LocalBackend(options), BenchConfig(out_dir=tmp_path / "warm", repair_attempts=0))
+    run_benchmark(
+        cases[:1],
+        LocalBackend(options),
+        BenchConfig(out_dir=tmp_path / "warm", session=SessionSettings(repair_attempts=0)),
+    )
     serial = run_benchmark(
-        cases, LocalBackend(options), BenchConfig(out_dir=tmp_path / "serial", repair_attempts=0)
+        cases,
+        LocalBackend(options),
+        BenchConfig(out_dir=tmp_path / "serial", session=SessionSettings(repair_attempts=0)),
     )
     parallel = run_benchmark(
-        cases, LocalBackend(options), BenchConfig(out_dir=tmp_path / "parallel", repair_attempts=0, jobs=2)
+        cases,
+        LocalBackend(options),
+        BenchConfig(out_dir=tmp_path / "parallel", session=SessionSettings(repair_attempts=0), jobs=2),
     )
     assert [r["code"] for r in serial] == [r["code"] for r in parallel]
     assert [r["modified_trajectory"] for r in serial] == [r["modified_trajectory"] for r in parallel]

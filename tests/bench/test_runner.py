@@ -14,6 +14,7 @@ from trajadapt.backends.scripted import ScriptedBackend
 from trajadapt.bench.report import summarize
 from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
 from trajadapt.cli import cli
+from trajadapt.session import SessionSettings
 
 SHIFT_LEFT = json.dumps(
     {
@@ -128,7 +129,9 @@ def test_waypoints_in_prompt_reaches_the_request(tmp_path: Path, ovita_dir: Path
     cases = [case for case in discover_cases([folder]) if case.key == "ground/case"]
     for waypoints in (False, True):
         backend = ScriptedBackend(answers=[SHIFT_LEFT])
-        config = BenchConfig(out_dir=tmp_path / str(waypoints), waypoints_in_prompt=waypoints)
+        config = BenchConfig(
+            out_dir=tmp_path / str(waypoints), session=SessionSettings(waypoints_in_prompt=waypoints)
+        )
         record = run_benchmark(cases, backend, config)[0]
         user_text = backend.requests[0].messages[1].content
         assert ("waypoints [x, y, z, velocity]" in user_text) is waypoints

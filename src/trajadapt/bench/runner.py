@@ -14,7 +14,7 @@ import queue
 from collections.abc import Callable, Iterator
 from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor, as_completed
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -57,14 +57,10 @@ class BenchConfig:
     """How to run: prompt mode, axes, repairs, output folder, parallel jobs, re-run or resume."""
 
     out_dir: Path
-    mode: str = "skills"
-    axes: str = "paper"
-    repair_attempts: int = 2
+    session: SessionSettings = field(default_factory=SessionSettings)
     jobs: int = 1
     force: bool = False
-    waypoints_in_prompt: bool = False
     isolation: Isolation = "auto"
-    project: bool = True
 
 
 def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
@@ -215,26 +211,18 @@ def _run_and_save(
 def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchConfig) -> dict[str, Any]:
     """Adapt one case (first plan approved) and score it; failures become an error record."""
     loaded = load_case(case.path)
-    settings = SessionSettings(
-        axes=AXIS_CONVENTIONS[config.axes],
-        mode=config.mode,
-        repair_attempts=config.repair_attempts,
-        waypoints_in_prompt=config.waypoints_in_prompt,
-        project=config.project,
-    )
-    session = AdaptationSession(loaded, backend, sandbox, settings)
+    session = AdaptationSession(loaded, backend, sandbox, config.session)
     try:
         session.draft()
         record = session.approve().to_dict()
     except TrajadaptError as exc:
         record = session.failure(f"{type(exc).__name__}: {exc}").to_dict()
-    record["mode"] = config.mode
-    record["waypoints_in_prompt"] = config.waypoints_in_prompt
-    record["project"] = config.project
-    record["axes"] = config.axes
+    record.update(
+        {key: record["settings"][key] for key in ("mode", "waypoints_in_prompt", "project", "axes")}
+    )
     record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
     record["evaluation"] = evaluate(
-        case, loaded, record, Axes.from_positive_x(AXIS_CONVENTIONS[config.axes].positive_x)
+        case, loaded, record, Axes.from_positive_x(config.session.axes.positive_x)
     )
     record["metrics"] = shape_metrics(loaded, record)
     record["target_scores"] = target_scores(case.path, loaded, record)
@@ -296,7 +284,7 @@ def rescore(cases: list[BenchCase], config: BenchConfig) -> int:
             continue
         record = json.loads(path.read_text())
         loaded = load_case(case.path)
-        axes = Axes.from_positive_x(AXIS_CONVENTIONS[record.get("axes", config.axes)].positive_x)
+        axes = Axes.from_positive_x(AXIS_CONVENTIONS[record.get("axes", config.session.axes.name)].positive_x)
         record["evaluation"] = evaluate(case, loaded, record, axes)
         record["metrics"] = shape_metrics(loaded, record)
         record["target_scores"] = target_scores(case.path, loaded, record)

@@ -15,6 +15,7 @@ import numpy as np
 
 from trajadapt.backends.base import ChatMessage
 from trajadapt.case import Case
+from trajadapt.example_bank import default_bank
 from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
 from trajadapt.skills import describe_skills
 from trajadapt.trajectory import Trajectory
@@ -124,13 +125,24 @@ def list_waypoints(trajectory: Trajectory) -> str:
     return "\n".join("[" + ", ".join(f"{value:.3g}" for value in row) + "]" for row in trajectory.array)
 
 
-def task_prompt(case: Case, waypoints: bool = False) -> str:
-    """The per-request part: environment, trajectory summary (and every waypoint) and the instruction."""
+def render_examples(case: Case, count: int) -> str:
+    """The ``count`` bank examples nearest to the case's instruction, nearest last, as a prompt section."""
+    names = [obj.name for obj in case.scene.objects]
+    chosen = default_bank().nearest(case.instruction, count, names)
+    if not chosen:
+        return ""
+    body = "\n\n".join(example.render() for example in reversed(chosen))
+    return f"EXAMPLES CLOSE TO THIS INSTRUCTION (their objects are not in this scene):\n{body}\n\n"
+
+
+def task_prompt(case: Case, waypoints: bool = False, examples: int = 0) -> str:
+    """The per-request part: chosen examples, environment, trajectory summary, instruction."""
     trajectory = summarize_trajectory(case.trajectory)
     if waypoints:
         trajectory += "\n- waypoints [x, y, z, velocity]:\n" + list_waypoints(case.trajectory)
     return render(
         "task",
+        examples=render_examples(case, examples),
         environment=describe_environment(case),
         trajectory=trajectory,
         instruction=case.instruction,
@@ -138,10 +150,14 @@ def task_prompt(case: Case, waypoints: bool = False) -> str:
 
 
 def first_messages(
-    case: Case, axes: AxisConvention, mode: str = "skills", waypoints: bool = False
+    case: Case, axes: AxisConvention, mode: str = "skills", waypoints: bool = False, examples: int = 0
 ) -> tuple[ChatMessage, ...]:
-    """The opening conversation for ``case``; ``waypoints`` adds every waypoint to the summary."""
+    """The opening conversation for ``case``.
+
+    ``waypoints`` adds every waypoint to the summary; ``examples`` puts that many bank examples
+    nearest to the instruction before the environment (skills mode only: the paper's prompt is fixed).
+    """
     return (
         ChatMessage("system", system_prompt(axes, mode)),
-        ChatMessage("user", task_prompt(case, waypoints)),
+        ChatMessage("user", task_prompt(case, waypoints, examples if mode == "skills" else 0)),
     )

@@ -83,6 +83,7 @@ ENVIRONMENT = {
     "PROJECT": "no",
     "GRAMMAR": "off",
     "EXAMPLES": "5",
+    "LEAVE_OUT_UNASKED": "no",
 }
 SEEN = {
     "axes": "ovita",
@@ -94,6 +95,7 @@ SEEN = {
     "project": False,
     "grammar": False,
     "examples": 5,
+    "leave_out_unasked": False,
 }
 
 

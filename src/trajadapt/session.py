@@ -33,6 +33,7 @@ from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
+from trajadapt.unasked_steps import leave_out_unasked
 
 TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
 
@@ -61,6 +62,7 @@ class SessionSettings:
     waypoints_in_prompt: bool = False
     grammar: bool = True
     examples: int = 3
+    leave_out_unasked: bool = True
 
     @classmethod
     def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
@@ -76,6 +78,7 @@ class SessionSettings:
             waypoints_in_prompt=settings.waypoints_in_prompt,
             grammar=settings.grammar,
             examples=settings.examples,
+            leave_out_unasked=settings.leave_out_unasked,
         )
 
     def describe(self) -> dict[str, Any]:
@@ -91,6 +94,7 @@ class SessionSettings:
             "project": self.project,
             "grammar": self.grammar,
             "examples": self.examples,
+            "leave_out_unasked": self.leave_out_unasked,
         }
 
 
@@ -219,6 +223,8 @@ class AdaptationSession:
         self._tokens = {"prompt": 0, "completion": 0}
         self._last_stdout = ""
         self._last_notes: tuple[str, ...] = ()
+        self._asked: list[str] = [case.instruction]  # the user's words: instruction, then feedback
+        self._left_out: list[str] = []  # notes on steps left out of the current plan
         self._started = time.perf_counter()
         self._checkpoints: list[tuple[int, int, Plan]] = []  # (messages, turns, plan) right after each plan
 
@@ -247,6 +253,7 @@ class AdaptationSession:
         text = safe_text(text, INSTRUCTION_CHARS)
         if not text.strip():
             raise SessionStateError("feedback is empty; say what should change in the plan")
+        self._asked.append(text)
         self.messages.append(ChatMessage("user", render(
             "feedback",
             feedback=text.strip(),
@@ -313,7 +320,7 @@ class AdaptationSession:
             completion = self._complete()
             self.messages.append(ChatMessage("assistant", completion.text))
             try:
-                plan = parse_answer(completion.text)
+                plan = self._without_unasked_steps(parse_answer(completion.text))
             except AnswerParseError as exc:
                 self._record(Turn(kind, user_text, None, completion, str(exc)))
                 if retry >= self.settings.format_retries:
@@ -327,6 +334,15 @@ class AdaptationSession:
             self._checkpoints.append((len(self.messages), len(self.turns), plan))
             return plan
         raise AssertionError("unreachable")
+
+    def _without_unasked_steps(self, plan: Plan) -> Plan:
+        """The plan without skill steps the user's words do not ask for (skills mode), noted for review."""
+        self._left_out = []
+        if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
+            return plan
+        names = [obj.name for obj in self.case.scene.objects]
+        code, self._left_out = leave_out_unasked(plan.code, self._asked, names)
+        return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
@@ -422,7 +438,8 @@ class AdaptationSession:
     def _notes(self, trajectory: Trajectory | None) -> tuple[ReviewNote, ...]:
         if trajectory is None:
             return ()
-        sandbox_notes = tuple(ReviewNote("sandbox", note) for note in self._last_notes)
+        sandbox_notes = tuple(ReviewNote("left-out", note) for note in self._left_out)
+        sandbox_notes += tuple(ReviewNote("sandbox", note) for note in self._last_notes)
         return sandbox_notes + tuple(review_notes(self.case.trajectory, trajectory))
 
     def _start_log(self) -> None:

@@ -42,6 +42,8 @@ class Settings:
             far waypoints moved); False sends it back for repair instead.
         grammar: in skills mode, constrain a local model's answer to the scene's answer grammar.
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
+        leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
+            change, an extension past the goal, a pause, a loop, ...; skills mode), with a review note.
     """
 
     home: Path = field(default_factory=default_home)
@@ -58,6 +60,7 @@ class Settings:
     project: bool = True
     grammar: bool = True
     examples: int = 3
+    leave_out_unasked: bool = True
 
     @property
     def log_path(self) -> Path:
@@ -83,6 +86,7 @@ ENV_FIELDS = {
     "project": bool,
     "grammar": bool,
     "examples": int,
+    "leave_out_unasked": bool,
 }
 
 

@@ -1,0 +1,159 @@
+"""Steps nobody asked for: found in skills code and left out before the user reviews the plan.
+
+A small model adds steps the instruction does not ask for: ``t = extend(t, 10.0)`` appended to
+"pass much further away from the sandal" moved the path ten times the scene's size, and
+``set_speed(t, 0.6)`` was added to "drive a lot closer to the stop watch". Each guarded skill
+belongs to a topic; a topic is asked for when the user's words (the instruction and any feedback)
+contain one of its word stems. A line ``t = <skill>(t, ...)`` whose topic is not asked for is left
+out (it maps the trajectory to a new one, so leaving it out is the identity for that step) and a
+review note says so. Skills that change the shape of the path are never left out: almost every
+instruction asks for a change of shape in some words.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Topic:
+    """A kind of change, the skills that make it, and the word stems that ask for it."""
+
+    name: str
+    skills: tuple[str, ...]
+    stems: tuple[str, ...]
+
+
+TOPICS = (
+    Topic(
+        "a speed change",
+        ("scale_speed", "set_speed", "speed_profile"),
+        (
+            "speed",
+            "fast",
+            "slow",
+            "quick",
+            "velocit",
+            "pace",
+            "hurr",
+            "accelerat",
+            "decelerat",
+            "brak",
+            "rush",
+            "crawl",
+            "rapid",
+            "swift",
+            "leisure",
+            "stop",
+            "time",
+            "tempo",
+            "sprint",
+            "dash",
+            "gentl",
+            "careful",
+        ),
+    ),  # fmt: skip
+    Topic(
+        "going on past the goal",
+        ("extend", "append_segment"),
+        (
+            "extend",
+            "continu",
+            "beyond",
+            "past",
+            "after",
+            "then",
+            "carry on",
+            "go on",
+            "onward",
+            "longer",
+            "straight to",
+            "proceed",
+            "lengthen",
+            "reach",
+            "finally",
+            "next",
+        ),
+    ),  # fmt: skip
+    Topic(
+        "a pause",
+        ("wait",),
+        (
+            "wait",
+            "pause",
+            "stop",
+            "halt",
+            "hold",
+            "rest",
+            "timestep",
+            "step",
+            "linger",
+            "stay for",
+            "break",
+            "still",
+            "freeze",
+            "dwell",
+            "second",
+        ),
+    ),  # fmt: skip
+    Topic("stopping early", ("stop_at",), ("stop", "halt", "end", "finish", "arriv", "terminat", "until")),
+    Topic(
+        "a loop",
+        ("spiral", "circle_around"),
+        ("spiral", "circl", "loop", "revolv", "orbit", "around", "round", "turn", "swirl", "helix", "rotat"),
+    ),  # fmt: skip
+    Topic(
+        "a new number of waypoints",
+        ("resample",),
+        (
+            "waypoint",
+            "point",
+            "sampl",
+            "resolution",
+            "dens",
+            "sparse",
+            "fewer",
+            "interpolat",
+            "smooth",
+            "granular",
+            "step",
+        ),
+    ),  # fmt: skip
+    Topic("noise", ("add_noise",), ("nois", "random", "jitter", "perturb", "stochastic", "shak", "robust")),
+)
+STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\w*)\s*[,)]")
+
+
+def asks_for(topic: Topic, words: str) -> bool:
+    """Whether ``words`` contain a stem of ``topic`` at the start of a word."""
+    lowered = words.lower()
+    return any(re.search(r"\b" + re.escape(stem), lowered) for stem in topic.stems)
+
+
+def topic_of(skill: str) -> Topic | None:
+    """The guarded topic a skill belongs to, if any."""
+    return next((topic for topic in TOPICS if skill in topic.skills), None)
+
+
+def leave_out_unasked(
+    code: str, asked: Iterable[str], object_names: Iterable[str] = ()
+) -> tuple[str, list[str]]:
+    """``code`` without the steps of a topic no ``asked`` text mentions, and a note per step left out.
+
+    Object names are not read as words ("stop watch" does not ask to stop). Only lines of the form
+    ``t = skill(t, ...)`` (the same variable in and out) are left out.
+    """
+    words = " ".join(asked).lower()
+    for name in sorted(object_names, key=len, reverse=True):
+        words = words.replace(name.lower(), " ") if name else words
+    kept, notes = [], []
+    for line in code.splitlines():
+        match = STATEMENT.match(line)
+        topic = topic_of(match.group(2)) if match and match.group(1) == match.group(3) else None
+        if topic is not None and not asks_for(topic, words):
+            notes.append(f"left out `{line.strip()}`: the instruction does not ask for {topic.name}")
+            continue
+        kept.append(line)
+    return "\n".join(kept), notes

@@ -1,0 +1,75 @@
+"""Steps nobody asked for are left out of skills code, with a note; asked-for steps stay."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from trajadapt.case import Case
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.skills import SKILL_NAMES
+from trajadapt.unasked_steps import TOPICS, leave_out_unasked
+
+CODE = "t = get_trajectory()\nt = move_away(t, detect_objects('sandal'), 'a lot')\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("pass much further away from the sandal", "t = extend(t, 10.0)"),
+        ("drive a lot closer to the stop watch", "t = set_speed(t, 0.6)"),
+        ("keep a bigger distance from the sandal", "t = wait(t, 'goal', 5)"),
+        ("go to the left", "t = spiral(t)"),
+        ("stay on the top", "t = add_noise(t)"),
+    ],
+)
+def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: str) -> None:
+    code, notes = leave_out_unasked(CODE.format(step=step), [instruction], ["sandal", "stop watch"])
+    assert step not in code and "move_away" in code and code.endswith("modified_trajectory = t")
+    assert len(notes) == 1 and step in notes[0] and "does not ask for" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("walk slower near the sandal", "t = scale_speed(t, 0.5, near=detect_objects('sandal'))"),
+        ("go past the goal by 0.2", "t = extend(t, 0.2)"),
+        ("after reaching the goal go straight to the door", "t = append_segment(t, detect_objects('door'))"),
+        ("pause 5 timesteps at the end", "t = wait(t, 'goal', 5)"),
+        ("revolve once around the piano", "t = circle_around(t, detect_objects('piano'))"),
+        ("double the number of waypoints", "t = resample(t, 2 * len(t))"),
+        ("add a little random noise", "t = add_noise(t)"),
+    ],
+)
+def test_a_step_the_words_ask_for_stays(instruction: str, step: str) -> None:
+    code, notes = leave_out_unasked(CODE.format(step=step), [instruction])
+    assert step in code and notes == []
+
+
+def test_feedback_words_count_and_other_forms_of_code_are_not_touched() -> None:
+    step = "t = scale_speed(t, 0.5)"
+    assert leave_out_unasked(CODE.format(step=step), ["go left", "and a bit slower"])[1] == []
+    numpy_style = "t = get_trajectory()\nu = scale_speed(t, 2)\nmodified_trajectory = u"
+    assert leave_out_unasked(numpy_style, ["go left"]) == (numpy_style, [])
+
+
+def test_every_guarded_skill_exists() -> None:
+    for topic in TOPICS:
+        assert set(topic.skills) <= set(SKILL_NAMES), topic.name
+
+
+def test_the_session_leaves_the_step_out_and_says_so(simple_case: Case, sandbox: Sandbox) -> None:
+    from trajadapt.backends.scripted import ScriptedBackend
+    from trajadapt.session import AdaptationSession, SessionSettings
+
+    code = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nt = extend(t, 10.0)\nmodified_trajectory = t"
+    answer = json.dumps({"high_level_plan": "1) Shift left. 2) Extend.", "python_code": code})
+    case = simple_case.with_instruction("go left by 0.2")
+    for leave_out, expected_length in ((True, len(case.trajectory)), (False, len(case.trajectory) + 10)):
+        backend = ScriptedBackend(answers=[answer])
+        session = AdaptationSession(case, backend, sandbox, SessionSettings(leave_out_unasked=leave_out))
+        assert ("extend" in session.draft().code) is not leave_out
+        result = session.approve()
+        assert result.trajectory is not None and len(result.trajectory) == expected_length
+        assert any(n.code == "left-out" for n in result.notes) is leave_out

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
-from trajadapt.skills.core import Axes, as_point, resolve_amount
+from trajadapt.skills.core import AMOUNT_WORDS, Axes, as_point, resolve_amount
+from trajadapt.skills.objects import CLOSER_FRACTIONS
 
 N = 100
 
@@ -67,7 +68,7 @@ def test_axis_convention_flips_left_and_right() -> None:
 def test_vague_amounts_scale_with_the_path() -> None:
     t = curve()
     assert resolve_amount("slightly", t) < resolve_amount(None, t) < resolve_amount("a lot", t)
-    assert np.isclose(resolve_amount("a lot", t), 0.3 * 2.0)
+    assert np.isclose(resolve_amount("a lot", t), AMOUNT_WORDS["a lot"] * 2.0)
     with pytest.raises(ValueError, match="unknown amount 'loads'"):
         shape.shift(t, "left", "loads")
     assert resolve_amount("at least 0.5", t) == 0.5 and resolve_amount("0.2 m", t) == 0.2
@@ -110,7 +111,7 @@ def distances(t: np.ndarray, point: list[float]) -> np.ndarray:
 def test_move_closer_and_away() -> None:
     t, box = curve(), [0.8, 1.0, 1.0]
     closer = objects.move_closer(t, box)
-    assert distances(closer, box).min() < 0.6 * distances(t, box).min()
+    assert distances(closer, box).min() < (1 - 0.9 * CLOSER_FRACTIONS[""]) * distances(t, box).min()
     assert np.allclose(closer[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, closer)
     assert (
         distances(objects.move_closer(t, box, "a lot"), box).min()

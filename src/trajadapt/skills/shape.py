@@ -28,13 +28,13 @@ from trajadapt.skills.core import (
     smoothstep,
 )
 
-BLEND_IN = 0.25  # fraction of the path over which a shift of the whole path is blended in
+BLEND_IN = 0.15  # fraction of the path over which a shift is blended in (latte-dev: better than 0.25)
 
 
 def shift(
     trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
 ) -> Array:
-    """Move the path in a direction by amount, keeping the start (blended in over the first quarter).
+    """Move the path in a direction by amount, keeping the start (blended in over the first 15%).
 
     Args:
         trajectory: (N, 4) rows x, y, z, velocity.

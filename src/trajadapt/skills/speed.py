@@ -27,7 +27,8 @@ from trajadapt.skills.core import (
 
 PROFILES = ("constant", "trapezoidal", "accelerate", "decelerate")
 
-NEAR_REACH = 0.2  # how far (fraction of the path's size) "near an object" reaches beyond the closest pass
+NEAR_REACH = 0.4  # how far (fraction of the path's size) "near an object" reaches beyond the closest pass
+# (calibrated on latte-dev with the factors of the prompt's phrase table: 0.2 before)
 
 
 def speed_weight(trajectory: Any, near: Any = None, radius: float | None = None, part: Any = None) -> Array:

@@ -237,3 +237,14 @@ def test_no_grammar_in_paper_mode_or_when_off(
     session, backend = make_session(simple_case, sandbox, answer("1) a", SHIFT_LEFT), **settings)
     session.draft()
     assert backend.requests[0].grammar is None
+
+
+def test_the_result_carries_the_measured_effect_and_flags(simple_case: Case, sandbox: Sandbox) -> None:
+    right = "t = get_trajectory()\nt = shift(t, 'right', 0.2)\nmodified_trajectory = t"
+    session, _ = make_session(simple_case, sandbox, answer("1) Shift.", right))  # the case says "go left"
+    session.draft()
+    payload = session.approve().to_dict()
+    effect = payload["effect"]
+    assert np.isclose(effect["goal_moved"], 0.2) and effect["goal_direction"] == "right"
+    assert effect["contradictions"] == ["the instruction says left, but the path moved right on average"]
+    assert any(line.startswith("start kept, goal moved 0.2 right") for line in effect["in_words"])

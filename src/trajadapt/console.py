@@ -76,6 +76,12 @@ def show_result(result: AdaptationResult) -> None:
         click.secho(f"Result: ok, {len(result.trajectory)} waypoints", fg="green", bold=True)
     else:
         click.secho(f"Result: failed after {result.attempts} attempt(s): {result.error}", fg="red", err=True)
+    if result.effect is not None:
+        click.echo("What changed:")
+        for line in result.effect.describe():
+            click.echo(f"  {line}")
+    for flag in result.contradictions:
+        click.secho(f"  check this: {flag}", fg="red")
     for note in result.notes:
         click.secho(f"  note: {note.message}", fg="yellow")
     if result.stdout.strip():

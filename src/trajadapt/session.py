@@ -17,6 +17,7 @@ from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completio
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
 from trajadapt.constraints import Constraints, constraints_for, new_violations
+from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
     AnswerParseError,
     BackendError,
@@ -31,6 +32,7 @@ from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
+from trajadapt.skills.core import Axes
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
@@ -143,6 +145,8 @@ class AdaptationResult:
     stdout: str = ""
     tokens: dict[str, int] = field(default_factory=dict)
     settings: dict[str, Any] = field(default_factory=dict)
+    effect: Effect | None = None
+    contradictions: tuple[str, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -170,6 +174,15 @@ class AdaptationResult:
             "review_notes": [note.message for note in self.notes],
             "stdout": self.stdout,
             "settings": self.settings,
+            "effect": (
+                {
+                    **self.effect.to_dict(),
+                    "in_words": self.effect.describe(),
+                    "contradictions": list(self.contradictions),
+                }
+                if self.effect
+                else None
+            ),
         }
 
 
@@ -433,7 +446,19 @@ class AdaptationSession:
             stdout=self._last_stdout,
             tokens=dict(self._tokens),
             settings=self.settings.describe(),
+            **self._effect(trajectory),
         )
+
+    def _effect(self, trajectory: Trajectory | None) -> dict[str, Any]:
+        """The measured effect of the result and what it contradicts in the user's words."""
+        if trajectory is None:
+            return {}
+        axes = Axes.from_positive_x(self.settings.axes.positive_x)
+        effect = measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes)
+        return {
+            "effect": effect,
+            "contradictions": tuple(contradictions(" ".join(self._asked), effect, axes)),
+        }
 
     def _notes(self, trajectory: Trajectory | None) -> tuple[ReviewNote, ...]:
         if trajectory is None:

@@ -237,8 +237,21 @@ def _run_session(
 def _review(session: AdaptationSession) -> bool:
     """Ask approve / feedback / quit once; True when the plan is approved."""
     choice = click.prompt(
-        "[a]pprove, [f]eedback or [q]uit", type=click.Choice(["a", "f", "q"]), show_choices=False
+        "[a]pprove, [f]eedback, [e]xplain or [q]uit",
+        type=click.Choice(["a", "f", "e", "q"]),
+        show_choices=False,
     )
+    if choice == "e":
+        explanation = session.explain()
+        source = (
+            "from the skills it calls"
+            if explanation.source == "skills"
+            else "the model's reading, not checked"
+        )
+        click.secho(f"What the code does ({source}):", bold=True)
+        for line in explanation.lines:
+            click.echo(f"  {line}")
+        return False
     if choice == "q":
         raise SessionStateError("quit without approving; nothing was written")
     if choice == "a":

@@ -13,6 +13,7 @@ import click
 
 from trajadapt.plan import Plan
 from trajadapt.session import AdaptationResult
+from trajadapt.skills.explain import explain_code
 
 
 class Progress:
@@ -67,6 +68,11 @@ def show_plan(plan: Plan) -> None:
     click.secho("Code:", bold=True)
     for number, line in enumerate(plan.code.rstrip("\n").splitlines(), start=1):
         click.echo(f"{number:3d}  {line}")
+    explanation = explain_code(plan.code)
+    if explanation:
+        click.secho("What the code does (from the skills it calls):", bold=True)
+        for number, line in enumerate(explanation, start=1):
+            click.echo(f"  {number}) {line}")
 
 
 def show_result(result: AdaptationResult) -> None:

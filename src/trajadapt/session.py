@@ -33,6 +33,7 @@ from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.core import Axes
+from trajadapt.skills.explain import explain_code
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
@@ -101,6 +102,18 @@ class SessionSettings:
 
 
 @dataclass(frozen=True)
+class Explanation:
+    """What the code does in plain words: exact from the skills, or the model's own reading of other code."""
+
+    source: Literal["skills", "model"]
+    lines: tuple[str, ...]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The result file's ``explanation`` field."""
+        return {"source": self.source, "lines": list(self.lines)}
+
+
+@dataclass(frozen=True)
 class Turn:
     """One request to the LLM and what came of it."""
 
@@ -147,6 +160,7 @@ class AdaptationResult:
     settings: dict[str, Any] = field(default_factory=dict)
     effect: Effect | None = None
     contradictions: tuple[str, ...] = ()
+    explanation: Explanation | None = None
 
     @property
     def ok(self) -> bool:
@@ -174,6 +188,7 @@ class AdaptationResult:
             "review_notes": [note.message for note in self.notes],
             "stdout": self.stdout,
             "settings": self.settings,
+            "explanation": self.explanation.to_dict() if self.explanation else None,
             "effect": (
                 {
                     **self.effect.to_dict(),
@@ -238,6 +253,7 @@ class AdaptationSession:
         self._last_notes: tuple[str, ...] = ()
         self._asked: list[str] = [case.instruction]  # the user's words: instruction, then feedback
         self._left_out: list[str] = []  # notes on steps left out of the current plan
+        self._model_explanations: dict[str, Explanation] = {}
         self._started = time.perf_counter()
         self._checkpoints: list[tuple[int, int, Plan]] = []  # (messages, turns, plan) right after each plan
 
@@ -296,6 +312,29 @@ class AdaptationSession:
                 return self._result(plan, f"repair answer unreadable: {exc}", attempts)
             except BackendError as exc:  # keep what failed; the repair itself could not be asked
                 return self._result(plan, f"{outcome} (no repair: {type(exc).__name__}: {exc})", attempts)
+
+    def explain(self) -> Explanation:
+        """The current code in plain words: from the skills when it is skill calls, else asked of the model.
+
+        Raises:
+            SessionStateError: no plan yet.
+            BackendError: the model could not be asked.
+        """
+        code = self._require_plan().code
+        lines = explain_code(code)
+        if lines is not None:
+            return Explanation("skills", tuple(lines))
+        if code not in self._model_explanations:
+            request = ChatRequest(
+                messages=(ChatMessage("user", render("explain", code=code)),),
+                temperature=0.0,
+                max_tokens=300,
+                seed=self.settings.seed,
+            )
+            text = safe_text(self.backend.complete(request).text, ANSWER_CHARS)
+            steps = tuple(line.strip() for line in text.splitlines() if line.strip())
+            self._model_explanations[code] = Explanation("model", steps)
+        return self._model_explanations[code]
 
     @property
     def versions(self) -> list[Plan]:
@@ -446,7 +485,19 @@ class AdaptationSession:
             stdout=self._last_stdout,
             tokens=dict(self._tokens),
             settings=self.settings.describe(),
+            explanation=self._explanation_of(plan),
             **self._effect(trajectory),
+        )
+
+    def _explanation_of(self, plan: Plan | None) -> Explanation | None:
+        """The skills' explanation, or the model's if the user asked for it; no LLM call here."""
+        if plan is None:
+            return None
+        lines = explain_code(plan.code)
+        return (
+            Explanation("skills", tuple(lines))
+            if lines is not None
+            else self._model_explanations.get(plan.code)
         )
 
     def _effect(self, trajectory: Trajectory | None) -> dict[str, Any]:

@@ -87,9 +87,11 @@ def load_scene(path: Path) -> Scene:
     return scene_from_dict(data, str(path))
 
 
-def load_case_from_parts(trajectory_path: Path, scene_path: Path | None, instruction: str) -> Case:
-    """Build a case from a trajectory file (JSON or CSV) and an optional scene file."""
+def load_case_from_parts(
+    trajectory_path: Path, scene_path: Path | None, instruction: str, trajectory: Trajectory | None = None
+) -> Case:
+    """Build a case from a trajectory file (JSON or CSV, or ``trajectory`` read from it) and a scene file."""
     scene = load_scene(scene_path) if scene_path is not None else Scene()
-    trajectory = load_trajectory_file(trajectory_path)
+    trajectory = trajectory if trajectory is not None else load_trajectory_file(trajectory_path)
     instruction = safe_text(instruction.strip(), INSTRUCTION_CHARS)
     return Case(trajectory_path.stem, trajectory, scene, instruction, trajectory_path)

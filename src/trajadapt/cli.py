@@ -26,6 +26,7 @@ from trajadapt.cli_common import (
     option_option,
 )
 from trajadapt.cli_robots import ROBOT_NAMES, plan, run_and_report, simulate
+from trajadapt.cli_ros import export
 from trajadapt.cli_serve import serve
 from trajadapt.console import CaseProgress, Progress, show_plan, show_result
 from trajadapt.constraints import Constraints
@@ -33,11 +34,13 @@ from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.results import sibling_file, write_json_atomic
+from trajadapt.rosbag_io import is_bag, read_bag_trajectory
 from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
 from trajadapt.store import Store
+from trajadapt.trajectory import Trajectory
 
 
 class TrajadaptGroup(click.Group):
@@ -74,7 +77,20 @@ def cli(debug: bool) -> None:
     "trajectory_file",
     type=click.Path(path_type=Path),
     default=None,
-    help="Trajectory file (JSON or CSV with columns x,y,z,v) instead of a case file.",
+    help="Trajectory file (JSON, CSV with columns x,y,z,v, or a ROS recording: .bag, .mcap, .db3 or a "
+    "ROS 2 bag folder, with --topic) instead of a case file.",
+)
+@click.option(
+    "--topic",
+    default=None,
+    help="The recording's topic holding the trajectory (nav_msgs/Path, geometry_msgs/PoseStamped or "
+    "trajectory_msgs/MultiDOFJointTrajectory).",
+)
+@click.option(
+    "--waypoints",
+    type=click.IntRange(2, 10000),
+    default=None,
+    help="Waypoints to resample a PoseStamped stream to (default 50).",
 )
 @click.option(
     "--scene",
@@ -150,6 +166,8 @@ def adapt(
     case_file: Path | None,
     instruction: str | None,
     trajectory_file: Path | None,
+    topic: str | None,
+    waypoints: int | None,
     scene_file: Path | None,
     backend: str | None,
     options: tuple[tuple[str, str], ...],
@@ -177,7 +195,7 @@ def adapt(
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
                  "project": project_onto, "examples": examples, "grammar": grammar}  # fmt: skip
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
-    case = _load_case(case_file, trajectory_file, scene_file, instruction)
+    case = _load_case(case_file, trajectory_file, scene_file, instruction, (topic, waypoints))
     chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or sibling_file(out, ".png")
@@ -195,13 +213,16 @@ def _load_case(
     trajectory_file: Path | None,
     scene_file: Path | None,
     instruction: str | None,
+    bag_topic: tuple[str | None, int | None] = (None, None),
 ) -> Case:
     if case_file is not None and trajectory_file is not None:
         raise InputError("give either a CASE_FILE or --trajectory, not both")
     if case_file is not None:
         case = load_case(case_file)
     elif trajectory_file is not None:
-        case = load_case_from_parts(trajectory_file, scene_file, instruction or "")
+        case = load_case_from_parts(
+            trajectory_file, scene_file, instruction or "", _bag_trajectory(trajectory_file, *bag_topic)
+        )
     else:
         raise InputError("give a CASE_FILE, or --trajectory FILE [--scene FILE] --instruction TEXT")
     if instruction is not None:
@@ -211,6 +232,23 @@ def _load_case(
             f"{case.source or case.name}: the case has no instruction; give one with --instruction"
         )
     return case
+
+
+def _bag_trajectory(path: Path, topic: str | None, waypoints: int | None) -> Trajectory | None:
+    """The trajectory of a ROS recording's topic, said where it came from; None for other files."""
+    if not is_bag(path):
+        if topic is not None:
+            raise InputError(
+                f"--topic is for ROS recordings (.bag, .mcap, .db3, a bag folder); {path} is not one"
+            )
+        return None
+    read = read_bag_trajectory(path, topic, waypoints)
+    click.echo(
+        f"Read {len(read.trajectory)} waypoints from {read.topic} ({read.msgtype}), frame '{read.frame}'"
+    )
+    for note in read.notes:
+        click.echo(f"  note: {note}")
+    return read.trajectory
 
 
 def _run_session(
@@ -469,3 +507,4 @@ def logs(limit: int, session_id: str | None, as_json: bool) -> None:
 cli.add_command(simulate)
 cli.add_command(plan)
 cli.add_command(serve)
+cli.add_command(export)

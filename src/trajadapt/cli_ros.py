@@ -1,0 +1,75 @@
+"""``trajadapt export``: a result file's trajectories where they are used (ROS bags, MCAP, CSV, JSON)."""
+
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path
+
+import click
+
+from trajadapt.errors import InputError
+from trajadapt.results import write_bytes_atomic, write_json_atomic
+from trajadapt.rosbag_io import times_from_speeds, write_paths
+from trajadapt.trajectory import Trajectory, read_json_file
+
+FORMATS = ("mcap", "bag", "csv", "json")
+
+
+@click.command()
+@click.argument("result_file", type=click.Path(path_type=Path, dir_okay=False))
+@click.option("--format", "fmt", type=click.Choice(FORMATS), default="mcap", show_default=True,
+              help="mcap (ROS 2, plays in Foxglove), bag (ROS 1), csv or json (x, y, z, v and the time "
+              "of each waypoint).")  # fmt: skip
+@click.option("--topic", default="/adapted_plan", show_default=True, help="Topic of the adapted path.")
+@click.option(
+    "--original-topic", default="/original_plan", show_default=True, help="Topic of the original path."
+)
+@click.option("--frame", default="map", show_default=True, help="frame_id of the paths.")
+@click.option("--out", "-o", type=click.Path(path_type=Path), default=None,
+              help="Output file (default: RESULT_FILE with the format's suffix).")  # fmt: skip
+def export(
+    result_file: Path, fmt: str, topic: str, original_topic: str, frame: str, out: Path | None
+) -> None:
+    """Write the adapted trajectory of RESULT_FILE (and the original) as nav_msgs/Path, CSV or JSON.
+
+    Each pose's time stamp is when the robot reaches that waypoint leaving each one at its speed, so
+    the two paths play next to a recording. Nothing is written when anything fails.
+    """
+    adapted, original = _trajectories(result_file)
+    out = out or result_file.with_name(result_file.name.removesuffix(".result.json") + f".adapted.{fmt}")
+    if fmt in ("mcap", "bag"):
+        if topic == original_topic:
+            raise InputError("--topic and --original-topic must differ")
+        write_paths(out, fmt, {topic: adapted, original_topic: original}, frame)
+    elif fmt == "csv":
+        write_bytes_atomic(out, _csv(adapted).encode("utf-8"))
+    else:
+        times = times_from_speeds(adapted.array)
+        record = {"trajectory": adapted.to_rows(), "time_s": [round(float(t), 9) for t in times],
+                  "original_trajectory": original.to_rows(), "frame": frame}  # fmt: skip
+        write_json_atomic(out, record)
+    click.echo(f"Wrote {out} ({fmt}: {len(adapted)} adapted and {len(original)} original waypoints)")
+
+
+def _trajectories(result_file: Path) -> tuple[Trajectory, Trajectory]:
+    data = read_json_file(result_file)
+    if not isinstance(data, dict) or "original_trajectory" not in data:
+        raise InputError(f"{result_file}: not a trajadapt result file (no original_trajectory)")
+    if not data.get("modified_trajectory"):
+        raise InputError(
+            f"{result_file}: the result has no adapted trajectory (status {data.get('status')!r})"
+        )
+    return (
+        Trajectory.from_rows(data["modified_trajectory"], f"{result_file}: modified_trajectory"),
+        Trajectory.from_rows(data["original_trajectory"], f"{result_file}: original_trajectory"),
+    )
+
+
+def _csv(trajectory: Trajectory) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["x", "y", "z", "v", "t"])
+    for row, time in zip(trajectory.array, times_from_speeds(trajectory.array), strict=True):
+        writer.writerow([repr(float(value)) for value in row] + [repr(float(time))])
+    return buffer.getvalue()

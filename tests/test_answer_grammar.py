@@ -141,3 +141,10 @@ def test_llama_cpp_reads_the_generated_grammar() -> None:
     from llama_cpp.llama_grammar import LlamaGrammar
 
     LlamaGrammar.from_string(answer_grammar(SCENE).to_gbnf(), verbose=False)
+
+
+def test_a_name_may_be_written_in_lower_case() -> None:
+    grammar = answer_grammar(("Siberian husky",))
+    assert grammar.matches(wrapped("t = move_closer(t, detect_objects('siberian husky'))"))
+    assert grammar.matches(wrapped("t = move_closer(t, detect_objects('Siberian husky'))"))
+    assert not grammar.matches(wrapped("t = move_closer(t, detect_objects('SIBERIAN HUSKY'))"))

@@ -76,10 +76,16 @@ def _quoted_words(words: Sequence[str]) -> Node:
 
 
 def usable_names(names: Sequence[str]) -> list[str]:
-    """Object names that can be written inside ``'...'`` in a JSON string, plus 'start' and 'goal'."""
+    """Object names that can be written inside ``'...'`` in a JSON string, plus 'start' and 'goal'.
+
+    Each name also in lower case: ``detect_objects`` ignores case, and a model that read "the siberian
+    husky" in the instruction must be able to write it so (with only 'Siberian husky' allowed, the
+    model, already committed to a lower-case 's', wrote 'start').
+    """
     safe = [n for n in names if n and not any(c in n for c in "'\"\\") and n.isprintable()]
     keys = {n.casefold() for n in safe}
-    return safe + [landmark for landmark in LANDMARKS if landmark not in keys]
+    spellings = dict.fromkeys(spelling for n in safe for spelling in (n, n.lower()))
+    return list(spellings) + [landmark for landmark in LANDMARKS if landmark not in keys]
 
 
 def value_rules(object_names: Sequence[str]) -> dict[str, Node]:

@@ -16,6 +16,7 @@ from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
+from trajadapt.chain import AdaptationChain
 from trajadapt.cli_common import (
     backend_option,
     backend_options,
@@ -200,8 +201,8 @@ def adapt(
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or sibling_file(out, ".png")
     limits = Constraints(min_clearance=clearance, max_speed=max_speed)
-    result = _run_session(case, chosen, settings, yes, limits)
-    _save(result, out, plot_file, settings)
+    result, record = _run_session(case, chosen, settings, yes, limits)
+    _save(result, record, out, plot_file, settings)
     if not result.ok:
         raise click.exceptions.Exit(1)
     if simulate_on is not None:
@@ -253,23 +254,47 @@ def _bag_trajectory(path: Path, topic: str | None, waypoints: int | None) -> Tra
 
 def _run_session(
     case: Case, backend: Backend, settings: Settings, yes: bool, limits: Constraints
-) -> AdaptationResult:
+) -> tuple[AdaptationResult, dict[str, Any]]:
+    """Draft, review, approve; then, interactively, corrections on the result or the original."""
     store = Store(settings.log_path) if settings.log else None
     session_settings = SessionSettings.from_settings(settings, limits)
     try:
         with Sandbox(isolation=isolation_of(settings)) as sandbox, Progress() as progress:
-            session = AdaptationSession(case, backend, sandbox, session_settings, store, progress.update)
+            chain = AdaptationChain(case, backend, sandbox, session_settings, store, progress.update)
             click.echo(f"Case {case.name}: {case.instruction}")
-            show_plan(session.draft())
-            while not yes and not _review(session):
-                pass
-            result = session.approve()
+            show_plan(chain.draft())
+            while True:
+                while not yes and not _review(chain.session):
+                    pass
+                result = chain.approve()
+                show_result(result)
+                if yes or not _correct(chain):
+                    break
     finally:
         backend.close()
         if store is not None:
             store.close()
-    show_result(result)
-    return result
+    return result, chain.to_dict(result)
+
+
+def _correct(chain: AdaptationChain) -> bool:
+    """Ask for a correction of the result; True when one was given (a new plan is shown)."""
+    try:
+        text = click.prompt(
+            "Enter keeps this result; 'c: text' changes it further, 'o: text' re-plans from the original",
+            default="",
+            show_default=False,
+        ).strip()
+    except click.Abort:  # the input ended (a pipe, Ctrl-D): keep the result
+        return False
+    if not text:
+        return False
+    kind, _, words = text.partition(":")
+    if kind.strip().lower() not in ("c", "o") or not words.strip():
+        click.echo("Write 'c: what to change' (on this result) or 'o: what to change' (from the original).")
+        return _correct(chain)
+    show_plan(chain.feedback(words.strip(), on="current" if kind.strip().lower() == "c" else "original"))
+    return True
 
 
 def _review(session: AdaptationSession) -> bool:
@@ -299,15 +324,18 @@ def _review(session: AdaptationSession) -> bool:
     return False
 
 
-def _save(result: AdaptationResult, out: Path, plot_file: Path, settings: Settings) -> None:
-    write_json_atomic(out, result.to_dict())
+def _save(
+    result: AdaptationResult, record: dict[str, Any], out: Path, plot_file: Path, settings: Settings
+) -> None:
+    write_json_atomic(out, record)
     click.echo(f"Result written to {out} (status {result.status})")
     if not result.ok:
         return
     try:
+        original = Trajectory.from_rows(record["original_trajectory"])  # the first step's input
         plot_comparison(
-            result.case.trajectory, result.trajectory, result.case.scene, plot_file,
-            AXIS_CONVENTIONS[settings.axes], title=result.case.instruction,
+            original, result.trajectory, result.case.scene, plot_file,
+            AXIS_CONVENTIONS[settings.axes], title=record["instruction"],
         )  # fmt: skip
     except Exception as exc:  # noqa: BLE001 - a picture that cannot be drawn must not fail a written result
         click.echo(f"Warning: the plot could not be drawn ({type(exc).__name__}: {safe_text(exc, 300)}); "

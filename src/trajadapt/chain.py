@@ -63,6 +63,22 @@ class AdaptationChain:
         """The step being worked on."""
         return self.steps[-1]
 
+    def report_progress_to(self, callback: ProgressCallback) -> None:
+        """Send every step's progress messages (this one's and later ones') to ``callback``."""
+        backend, sandbox, settings, store, _ = self._parts
+        self._parts = (backend, sandbox, settings, store, callback)
+        for step in self.steps:
+            step.on_progress = callback
+
+    @property
+    def session_ids(self) -> list[str]:
+        """The log's session id of every step."""
+        return [step.session_id for step in self.steps if step.session_id]
+
+    def preview(self) -> Any:
+        """The current plan's code run once on this step's input, without repair (see AdaptationSession)."""
+        return self.session.preview()
+
     def draft(self) -> Plan:
         """The first plan of the first step."""
         return self._remember(self.session.draft())

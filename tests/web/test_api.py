@@ -92,3 +92,32 @@ def test_token_is_required_when_set(tmp_path: Path) -> None:
         assert guarded.get("/api/cases", headers={"X-Trajadapt-Token": "s3cret"}).status_code == 200
         assert guarded.get("/api/cases?token=s3cret").status_code == 200
         assert guarded.get("/").status_code == 200  # the page itself loads; it sends the token from its URL
+
+
+def test_feedback_on_the_approved_result_chains_and_the_page_gets_effect_and_explanation(
+    tmp_path: Path,
+) -> None:
+    with TestClient(build_app(tmp_path, [FIRST, SECOND])) as client:
+        state = start(client)
+        sid = state["id"]
+        assert state["versions"][0]["explanation"] is None or isinstance(
+            state["versions"][0]["explanation"], list
+        )
+        refused = client.post(f"/api/sessions/{sid}/feedback", json={"text": "more", "on": "current"})
+        assert refused.status_code == 200  # accepted as a job; it fails in words: nothing approved yet
+        state = wait_idle(client, sid)
+        assert "approve a plan first" in state["error"] and len(state["versions"]) == 1
+        client.post(f"/api/sessions/{sid}/approve")
+        state = wait_idle(client, sid)
+        first = state["result"]["modified_trajectory"]
+        assert state["result"]["effect"]["in_words"] and state["result"]["effect"]["contradictions"] == []
+        client.post(f"/api/sessions/{sid}/feedback", json={"text": "more, and slower", "on": "current"})
+        state = wait_idle(client, sid)
+        assert state["versions"][1]["on"] == "current" and state["result"] is None
+        client.post(f"/api/sessions/{sid}/approve")
+        state = wait_idle(client, sid)
+        chain = state["result"]["chain"]
+        assert [step["instruction"] for step in chain] == ["go left", "more, and slower"]
+        assert chain[0]["trajectory"] == first
+        assert abs(state["result"]["modified_trajectory"][-1][0] - (first[-1][0] + 0.3)) < 1e-9
+        assert client.get(f"/api/sessions/{sid}/result").json()["chain"] == chain

@@ -12,7 +12,7 @@ import json
 from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
@@ -49,9 +49,10 @@ class StartBody(BaseModel):
 
 
 class TextBody(BaseModel):
-    """Feedback text."""
+    """Feedback text, and whether it changes the original trajectory or the current result."""
 
     text: str
+    on: Literal["original", "current"] = "original"
 
 
 class UndoBody(BaseModel):
@@ -171,7 +172,7 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
     def sessions() -> dict[str, Any]:
         live = [{"id": s.id, "case_name": s.case.name, "instruction": s.case.instruction,
                  "status": s.status, "live": True} for s in state.live.values()]  # fmt: skip
-        known = {s.session.session_id for s in state.live.values()}
+        known = {session_id for s in state.live.values() for session_id in s.session.session_ids}
         stored = [dict(s, live=False) for s in state.services.stored_sessions() if s["id"] not in known]
         return {"sessions": live + stored}
 
@@ -199,8 +200,9 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
         before = len(live.session.versions) - 1
 
         def work() -> None:
+            plan = live.session.feedback(text, on=body.on)
             live.result = None
-            add_version(live, text, live.session.feedback(text))
+            add_version(live, text, plan, body.on)
 
         state.jobs.start(live, "asking for a new plan", work, lambda: _drop_after(live, before))
         return live.to_dict()
@@ -241,7 +243,7 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
 def _new_live(state: ServerState, case: Case) -> LiveSession:
     session = state.services.new_session(case)
     live = LiveSession(case=case, session=session, status="ready")
-    session.on_progress = live.say
+    session.report_progress_to(live.say)
 
     def work() -> None:
         add_version(live, case.instruction, session.draft())
@@ -276,7 +278,7 @@ def _output_routes(app: FastAPI, state: ServerState) -> None:
         live = _find(state, session_id)
         if live.result is None:
             raise SessionStateError("there is no approved result yet")
-        text = json.dumps(live.result.to_dict(), indent=1)
+        text = json.dumps(live.session.to_dict(live.result), indent=1)
         headers = {"Content-Disposition": attachment(result_file_name(live))}
         return Response(text, media_type="application/json", headers=headers)
 

@@ -1,4 +1,4 @@
-"""Review sessions held by the server: one AdaptationSession each, worked on by background jobs.
+"""Review sessions held by the server: one AdaptationChain each, worked on by background jobs.
 
 An LLM call takes seconds to a minute, so every request that needs one starts a job on a thread and
 returns at once; the page polls the session's state. Cancelling abandons the job: the page is free
@@ -17,9 +17,11 @@ from pathlib import Path
 from typing import Any, Literal
 
 from trajadapt.case import Case
+from trajadapt.chain import AdaptationChain
 from trajadapt.errors import SessionStateError, TrajadaptError
 from trajadapt.plan import Plan
-from trajadapt.session import AdaptationResult, AdaptationSession
+from trajadapt.session import AdaptationResult
+from trajadapt.skills.explain import explain_code
 from trajadapt.trajectory import Trajectory
 
 Status = Literal["working", "ready", "approved", "failed"]
@@ -35,12 +37,15 @@ class Version:
     proposed: list[list[float]] | None
     problem: str | None
     checkpoint: int  # the session's plan version to rewind to
+    on: str = "original"  # what the feedback changed: the original trajectory or the current result
+    explanation: list[str] | None = None  # the code in words, from the skills (None: not only skill calls)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form for the page."""
         return {
             "index": self.index, "request": self.request, "steps": list(self.plan.steps),
             "code": self.plan.code, "proposed": self.proposed, "problem": self.problem,
+            "explanation": self.explanation, "on": self.on,
         }  # fmt: skip
 
 
@@ -49,7 +54,7 @@ class LiveSession:
     """A session the server is working on, with its versions, job state and outputs."""
 
     case: Case
-    session: AdaptationSession
+    session: AdaptationChain
     id: str = field(default_factory=lambda: uuid.uuid4().hex[:12])
     versions: list[Version] = field(default_factory=list)
     current: int = -1
@@ -69,7 +74,8 @@ class LiveSession:
             "activity": self.activity, "elapsed_s": round(time.time() - self.activity_since, 1),
             "error": self.error, "case": _case_view(self.case), "current": self.current,
             "versions": [v.to_dict() for v in self.versions],
-            "result": self.result.to_dict() if self.result else None, "simulation": self.simulation,
+            "result": self.session.to_dict(self.result) if self.result else None,
+            "simulation": self.simulation,
         }  # fmt: skip
 
     def say(self, activity: str) -> None:
@@ -135,14 +141,17 @@ class Jobs:
         live.say("idle")
 
 
-def add_version(live: LiveSession, request: str, plan: Plan) -> None:
+def add_version(live: LiveSession, request: str, plan: Plan, on: str = "original") -> None:
     """Record a new plan with its preview (the code run once on the trajectory)."""
     live.say("running the code for a preview")
     outcome = live.session.preview()
     proposed = outcome.to_rows() if isinstance(outcome, Trajectory) else None
     problem = None if isinstance(outcome, Trajectory) else outcome
     checkpoint = len(live.session.versions) - 1
-    live.versions.append(Version(len(live.versions), request, plan, proposed, problem, checkpoint))
+    explanation = explain_code(plan.code)
+    live.versions.append(
+        Version(len(live.versions), request, plan, proposed, problem, checkpoint, on, explanation)
+    )
     live.current = len(live.versions) - 1
 
 

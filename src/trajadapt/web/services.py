@@ -12,9 +12,10 @@ from typing import Any
 
 from trajadapt.backends.base import Backend
 from trajadapt.case import Case, load_case
+from trajadapt.chain import AdaptationChain
 from trajadapt.errors import InputError
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
+from trajadapt.session import AdaptationResult, SessionSettings
 from trajadapt.store import Store
 
 
@@ -30,9 +31,9 @@ class Services:
     cases_dir: Path | None = None
     simulator: Callable[[AdaptationResult, str, Path], dict[str, Any]] | None = None
 
-    def new_session(self, case: Case) -> AdaptationSession:
-        """A session on ``case`` logged to the shared SQLite log."""
-        return AdaptationSession(case, self.backend, self.sandbox, self.settings, self.store)
+    def new_session(self, case: Case) -> AdaptationChain:
+        """A session on ``case`` (a chain: corrections may build on its results), logged to the shared log."""
+        return AdaptationChain(case, self.backend, self.sandbox, self.settings, self.store)
 
     def case_names(self) -> list[str]:
         """Case files under the cases folder, as paths relative to it."""

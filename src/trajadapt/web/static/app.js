@@ -73,7 +73,8 @@ $("ask").addEventListener("click", () => guarded(async () => {
 }));
 
 $("send-feedback").addEventListener("click", () => guarded(async () => {
-  follow(await post("/api/sessions/" + state.session.id + "/feedback", { text: $("feedback").value }));
+  follow(await post("/api/sessions/" + state.session.id + "/feedback",
+    { text: $("feedback").value, on: $("feedback-on").value }));
   $("feedback").value = "";
 }));
 
@@ -113,7 +114,9 @@ function render(session) {
   const version = session.versions[session.current];
   $("plan-box").hidden = !version;
   const editable = session.live && session.status !== "working";
-  for (const id of ["send-feedback", "approve", "feedback"]) $(id).disabled = !editable;
+  for (const id of ["send-feedback", "approve", "feedback", "feedback-on"]) $(id).disabled = !editable;
+  $("feedback-on").options[1].disabled = !session.result;
+  if (!session.result) $("feedback-on").value = "original";
   if (version) renderVersion(version, session);
   renderHistory(session);
   renderResult(session);
@@ -130,6 +133,13 @@ function renderVersion(version, session) {
     return item;
   }));
   $("code").innerHTML = highlight(version.code);
+  const lines = version.explanation || [];
+  $("explanation-box").hidden = lines.length === 0;
+  $("explanation").replaceChildren(...lines.map((line) => {
+    const item = document.createElement("li");
+    item.textContent = line;
+    return item;
+  }));
   $("problem").hidden = !version.problem;
   $("problem").textContent = version.problem ? "The code does not run yet: " + version.problem : "";
 }
@@ -138,7 +148,8 @@ function renderHistory(session) {
   $("history-box").hidden = session.versions.length === 0;
   $("history").replaceChildren(...session.versions.map((version) => {
     const item = document.createElement("li");
-    item.textContent = (version.index === 0 ? "Instruction: " : "Feedback: ") + version.request + " → " +
+    const kind = version.index === 0 ? "Instruction: " : (version.on === "current" ? "On the result: " : "Feedback: ");
+    item.textContent = kind + version.request + " → " +
       version.steps.length + "-step plan ";
     if (session.live && version.index < session.versions.length - 1 && session.status !== "working") {
       const button = document.createElement("button");
@@ -158,6 +169,18 @@ function renderResult(session) {
   $("result-box").hidden = !result;
   if (!result) return;
   $("result-status").textContent = "Approved: " + result.modified_trajectory.length + " waypoints (status " + result.status + ")";
+  const effect = result.effect || { in_words: [], contradictions: [] };
+  $("effect").replaceChildren(...effect.in_words.map((line) => {
+    const item = document.createElement("li");
+    item.textContent = line;
+    return item;
+  }));
+  $("contradictions").hidden = effect.contradictions.length === 0;
+  $("contradictions").replaceChildren(...effect.contradictions.map((line) => {
+    const item = document.createElement("li");
+    item.textContent = "Check this: " + line;
+    return item;
+  }));
   $("download").href = "/api/sessions/" + session.id + "/result" + (TOKEN ? "?token=" + encodeURIComponent(TOKEN) : "");
   const sim = session.simulation;
   $("sim-summary").textContent = sim ? sim.summary.join("\n") : "";

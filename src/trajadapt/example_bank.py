@@ -22,7 +22,10 @@ WORD = re.compile(r"[a-z]+|\d+(?:\.\d+)?")
 OBJECT_NAME = re.compile(r"detect_objects\('([^']*)'\)")
 STOP_WORDS = frozenset(
     "the a an to of and by in on at it its is be as for with from your you this that then when while "
-    "please path trajectory robot".split()
+    "please path trajectory robot route motion way position "
+    # motion verbs and intensity words say nothing about which change is meant
+    "go goes going walk walking drive driving move moving fly flying head travel execute perform do make "
+    "get bit little lot much very slightly slighlty somewhat really more less".split()
 )
 K1, B = 1.5, 0.75  # the usual Okapi BM25 constants
 
@@ -60,7 +63,9 @@ SAME_MEANING = {
     "loop": "circle", "round": "around", "smoothen": "smooth", "timestep": "step",
     "timesteps": "step", "steps": "step", "waypoints": "waypoint", "points": "waypoint",
     "end": "goal", "final": "goal", "finish": "goal", "destination": "goal", "begin": "start",
-    "beginning": "start", "initial": "start",
+    "beginning": "start", "initial": "start", "starting": "start", "curvature": "curve", "curved": "curve",
+    "curvy": "curve", "proximity": "close", "surrounding": "close", "surroundings": "close",
+    "vicinity": "close", "next": "close", "beside": "close", "passing": "pass",
 }  # fmt: skip
 """Words read as one: direction, speed and distance words a user may say in several ways."""
 
@@ -76,13 +81,15 @@ def stem(word: str) -> str:
 
 
 def terms(text: str, leave_out: Iterable[str] = ()) -> list[str]:
-    """The stems of ``text`` without stop words, numbers as '<number>', and the given names removed."""
+    """The stems of ``text`` without stop words (numbers as '<number>', the given names removed), then
+    each pair of neighbouring stems ('slow+close'), which tells "slower near" from "closer" and "slower"."""
     lowered = text.lower()
     for name in sorted(leave_out, key=len, reverse=True):
         if name:
             lowered = lowered.replace(name.lower(), " ")
     words = WORD.findall(lowered)
-    return ["<number>" if word[0].isdigit() else stem(word) for word in words if word not in STOP_WORDS]
+    stems = ["<number>" if word[0].isdigit() else stem(word) for word in words if word not in STOP_WORDS]
+    return stems + [f"{first}+{second}" for first, second in zip(stems, stems[1:], strict=False)]
 
 
 class ExampleBank:

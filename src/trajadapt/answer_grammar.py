@@ -23,7 +23,7 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Annotated, Any
 
-from trajadapt.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Many, Node, Opt, Ref, Some, alt, seq
+from trajadapt.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Many, Node, Opt, Ref, Some, Upto, alt, seq
 from trajadapt.sandbox.api import GOAL_NAMES, RESULT_VARIABLE, START_NAMES
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, DIRECTIONS, PART_WORDS, ArgKind
@@ -34,6 +34,7 @@ from trajadapt.skills.speed import PROFILES
 PLAIN_KINDS = {float: "number", int: "count", bool: "flag"}
 LANDMARKS = (START_NAMES[0], GOAL_NAMES[0])  # 'start' and 'goal' resolve to the path's own ends
 NEWLINE = "\\n"  # a newline inside the JSON string of the code
+MAX_STEPS = 8  # skill calls per answer: a small model can repeat a line until it runs out of tokens
 
 
 def parameter_kind(hint: Any) -> str:
@@ -153,7 +154,7 @@ def answer_grammar(object_names: tuple[str, ...]) -> Grammar:
         "plan": Some(PLAIN_TEXT_CHAR),
         "code": seq(
             "t = get_trajectory()" + NEWLINE,
-            Many(seq("t = ", Ref("call"), NEWLINE)),
+            Upto(seq("t = ", Ref("call"), NEWLINE), MAX_STEPS),
             f"{RESULT_VARIABLE} = t",
         ),
         "call": alt(*(Ref(f"call-{f.__name__.replace('_', '-')}") for f in statements)),

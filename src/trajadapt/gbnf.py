@@ -13,7 +13,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Union
 
-Node = Union["Lit", "Chars", "Seq", "Alt", "Opt", "Many", "Some", "Ref"]
+Node = Union["Lit", "Chars", "Seq", "Alt", "Opt", "Many", "Some", "Upto", "Ref"]
 
 
 @dataclass(frozen=True)
@@ -63,6 +63,14 @@ class Some:
     """The inner node one or more times."""
 
     inner: Node
+
+
+@dataclass(frozen=True)
+class Upto:
+    """The inner node zero to ``most`` times."""
+
+    inner: Node
+    most: int
 
 
 @dataclass(frozen=True)
@@ -118,7 +126,7 @@ def _refs(node: Node) -> Iterator[str]:
     elif isinstance(node, Alt):
         for choice in node.choices:
             yield from _refs(choice)
-    elif isinstance(node, Opt | Many | Some):
+    elif isinstance(node, Opt | Many | Some | Upto):
         yield from _refs(node.inner)
 
 
@@ -133,6 +141,8 @@ def _render(node: Node) -> str:
         return " ".join(_group(part) for part in node.parts)
     if isinstance(node, Alt):
         return " | ".join(_render(choice) for choice in node.choices)
+    if isinstance(node, Upto):
+        return _group(node.inner) + f"{{0,{node.most}}}"
     suffix = {Opt: "?", Many: "*", Some: "+"}[type(node)]
     return _group(node.inner) + suffix
 
@@ -174,6 +184,8 @@ def _match(grammar: Grammar, node: Node, text: str, pos: int) -> Iterator[int]:
     elif isinstance(node, Opt):
         yield pos
         yield from _match(grammar, node.inner, text, pos)
+    elif isinstance(node, Upto):
+        yield from _match_upto(grammar, node, text, pos)
     else:
         yield from _match_repeat(grammar, node, text, pos)
 
@@ -184,6 +196,17 @@ def _match_seq(grammar: Grammar, parts: tuple[Node, ...], text: str, pos: int) -
         return
     for middle in _match(grammar, parts[0], text, pos):
         yield from _match_seq(grammar, parts[1:], text, middle)
+
+
+def _match_upto(grammar: Grammar, node: Upto, text: str, pos: int) -> Iterator[int]:
+    """Zero to ``node.most`` repetitions, longest first."""
+    reached, frontier = {pos}, {pos}
+    for _ in range(node.most):
+        frontier = {
+            end for start in frontier for end in _match(grammar, node.inner, text, start) if end > start
+        }
+        reached |= frontier
+    yield from sorted(reached, reverse=True)
 
 
 def _match_repeat(grammar: Grammar, node: Many | Some, text: str, pos: int) -> Iterator[int]:

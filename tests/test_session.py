@@ -248,3 +248,32 @@ def test_the_result_carries_the_measured_effect_and_flags(simple_case: Case, san
     assert np.isclose(effect["goal_moved"], 0.2) and effect["goal_direction"] == "right"
     assert effect["contradictions"] == ["the instruction says left, but the path moved right on average"]
     assert any(line.startswith("start kept, goal moved 0.2 right") for line in effect["in_words"])
+
+
+@pytest.mark.parametrize("second_code", ["t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t",
+                                         "t = get_trajectory()\nt = shift(t, 'right', 0.4)\nmodified_trajectory = t"])  # fmt: skip
+def test_a_contradiction_gets_one_more_answer_kept_only_if_better(
+    simple_case: Case, sandbox: Sandbox, second_code: str
+) -> None:
+    right = "t = get_trajectory()\nt = shift(t, 'right', 0.2)\nmodified_trajectory = t"
+    session, backend = make_session(
+        simple_case,
+        sandbox,
+        answer("1) Shift.", right),
+        answer("1) Shift left.", second_code),
+        repair_contradictions=True,
+    )
+    session.draft()
+    result = session.approve()
+    assert "contradicts the instruction" in backend.requests[1].messages[-1].content
+    assert result.trajectory is not None
+    went_left = "'left'" in second_code
+    assert bool(result.trajectory.positions[-1, 0] > 0) is went_left  # the better answer is kept, else the first
+    assert (result.contradictions == ()) is went_left
+
+
+def test_no_second_look_by_default(simple_case: Case, sandbox: Sandbox) -> None:
+    right = "t = get_trajectory()\nt = shift(t, 'right', 0.2)\nmodified_trajectory = t"
+    session, backend = make_session(simple_case, sandbox, answer("1) Shift.", right))
+    session.draft()
+    assert session.approve().contradictions and len(backend.requests) == 1

@@ -84,6 +84,7 @@ ENVIRONMENT = {
     "GRAMMAR": "off",
     "EXAMPLES": "5",
     "LEAVE_OUT_UNASKED": "no",
+    "REPAIR_CONTRADICTIONS": "yes",
 }
 SEEN = {
     "axes": "ovita",
@@ -96,6 +97,7 @@ SEEN = {
     "grammar": False,
     "examples": 5,
     "leave_out_unasked": False,
+    "repair_contradictions": True,
 }
 
 

@@ -66,6 +66,7 @@ class SessionSettings:
     grammar: bool = True
     examples: int = 3
     leave_out_unasked: bool = True
+    repair_contradictions: bool = False
 
     @classmethod
     def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
@@ -82,6 +83,7 @@ class SessionSettings:
             grammar=settings.grammar,
             examples=settings.examples,
             leave_out_unasked=settings.leave_out_unasked,
+            repair_contradictions=settings.repair_contradictions,
         )
 
     def describe(self) -> dict[str, Any]:
@@ -98,6 +100,7 @@ class SessionSettings:
             "grammar": self.grammar,
             "examples": self.examples,
             "leave_out_unasked": self.leave_out_unasked,
+            "repair_contradictions": self.repair_contradictions,
         }
 
 
@@ -299,7 +302,10 @@ class AdaptationSession:
             attempts += 1
             self.on_progress(f"running the code (attempt {attempts})")
             outcome = self._execute(plan)
-            if isinstance(outcome, Trajectory) or attempts > self.settings.repair_attempts:
+            if isinstance(outcome, Trajectory):
+                plan, outcome = self._second_look(plan, outcome)
+                return self._result(plan, outcome, attempts)
+            if attempts > self.settings.repair_attempts:
                 return self._result(plan, outcome, attempts)
             self.on_progress(f"the code failed, asking for a repair: {outcome}")
             problem = outcome + skill_hints(plan.code, outcome) if self.settings.mode == "skills" else outcome
@@ -312,6 +318,31 @@ class AdaptationSession:
                 return self._result(plan, f"repair answer unreadable: {exc}", attempts)
             except BackendError as exc:  # keep what failed; the repair itself could not be asked
                 return self._result(plan, f"{outcome} (no repair: {type(exc).__name__}: {exc})", attempts)
+
+    def _second_look(self, plan: Plan, trajectory: Trajectory) -> tuple[Plan, Trajectory]:
+        """With ``repair_contradictions``: one more answer when the result contradicts the instruction.
+
+        The new code is kept only if it runs and its result contradicts the words less; otherwise the
+        first result stands (and its flags go to the reviewer as usual).
+        """
+        if not self.settings.repair_contradictions:
+            return plan, trajectory
+        flags = self._effect(trajectory)["contradictions"]
+        if not flags:
+            return plan, trajectory
+        self.on_progress("the result contradicts the instruction, asking once more")
+        problems = "\n".join(f"- {flag}" for flag in flags)
+        self.messages.append(ChatMessage("user", render(
+            "contradiction", problems=problems, instruction=self.case.instruction
+        )))  # fmt: skip
+        try:
+            second = self._ask("repair", "; ".join(flags))
+        except (AnswerParseError, BackendError):
+            return plan, trajectory
+        outcome = self._execute(second)
+        if isinstance(outcome, Trajectory) and len(self._effect(outcome)["contradictions"]) < len(flags):
+            return second, outcome
+        return plan, trajectory
 
     def explain(self) -> Explanation:
         """The current code in plain words: from the skills when it is skill calls, else asked of the model.

@@ -44,6 +44,8 @@ class Settings:
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
         leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
             change, an extension past the goal, a pause, a loop, ...; skills mode), with a review note.
+        repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
+            model once more with the contradiction, and keep the new result if it contradicts less.
     """
 
     home: Path = field(default_factory=default_home)
@@ -61,6 +63,7 @@ class Settings:
     grammar: bool = True
     examples: int = 3
     leave_out_unasked: bool = True
+    repair_contradictions: bool = False
 
     @property
     def log_path(self) -> Path:
@@ -87,6 +90,7 @@ ENV_FIELDS = {
     "grammar": bool,
     "examples": int,
     "leave_out_unasked": bool,
+    "repair_contradictions": bool,
 }
 
 

@@ -12,10 +12,12 @@ from trajadapt.case import Case
 from trajadapt.chain import AdaptationChain
 from trajadapt.errors import SessionStateError
 from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import SessionSettings
 from trajadapt.skills import bind_skills
 
 LEFT = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
 SLOW = "t = get_trajectory()\nt = scale_speed(t, 0.5, near=detect_objects('box'))\nmodified_trajectory = t"
+VERBATIM = SessionSettings(leave_out_unasked=False)  # the codes' numbers are not in these instructions
 UP = "t = get_trajectory()\nt = shift(t, 'up', 0.1)\nmodified_trajectory = t"
 
 
@@ -25,7 +27,7 @@ def answer(code: str) -> str:
 
 def test_a_two_step_current_chain_equals_the_two_codes_in_turn(simple_case: Case, sandbox: Sandbox) -> None:
     backend = ScriptedBackend(answers=[answer(LEFT), answer(SLOW)])
-    chain = AdaptationChain(simple_case, backend, sandbox)
+    chain = AdaptationChain(simple_case, backend, sandbox, VERBATIM)
     chain.draft()
     first = chain.approve()
     chain.feedback("now also slow down near the box", on="current")
@@ -48,7 +50,7 @@ def test_a_two_step_current_chain_equals_the_two_codes_in_turn(simple_case: Case
 
 def test_original_replans_from_the_start_with_everything_said(simple_case: Case, sandbox: Sandbox) -> None:
     backend = ScriptedBackend(answers=[answer(LEFT), answer(SLOW), answer(UP)])
-    chain = AdaptationChain(simple_case, backend, sandbox)
+    chain = AdaptationChain(simple_case, backend, sandbox, VERBATIM)
     chain.draft()
     chain.approve()
     chain.feedback("slow down near the box", on="current")
@@ -66,7 +68,7 @@ def test_original_replans_from_the_start_with_everything_said(simple_case: Case,
 
 def test_undo_works_across_both_kinds(simple_case: Case, sandbox: Sandbox) -> None:
     backend = ScriptedBackend(answers=[answer(LEFT), answer(SLOW)])
-    chain = AdaptationChain(simple_case, backend, sandbox)
+    chain = AdaptationChain(simple_case, backend, sandbox, VERBATIM)
     chain.draft()
     chain.approve()
     chain.feedback("slow down near the box", on="current")
@@ -82,7 +84,7 @@ def test_undo_works_across_both_kinds(simple_case: Case, sandbox: Sandbox) -> No
 
 
 def test_current_needs_a_result_first(simple_case: Case, sandbox: Sandbox) -> None:
-    chain = AdaptationChain(simple_case, ScriptedBackend(answers=[answer(LEFT)]), sandbox)
+    chain = AdaptationChain(simple_case, ScriptedBackend(answers=[answer(LEFT)]), sandbox, VERBATIM)
     chain.draft()
     with pytest.raises(SessionStateError, match="approve a plan first"):
         chain.feedback("slower", on="current")
@@ -99,6 +101,7 @@ def test_the_cli_chains_a_correction_on_the_result(simple_case: Case, tmp_path) 
     case_file.write_text(json.dumps(simple_case.to_dict()))
     answers = tmp_path / "answers.json"
     answers.write_text(json.dumps([answer(LEFT), answer(SLOW)]))
+    case_file.write_text(json.dumps(simple_case.with_instruction("go left by 0.2").to_dict()))
     out = tmp_path / "case.result.json"
     result = CliRunner().invoke(
         cli,
@@ -119,5 +122,8 @@ def test_the_cli_chains_a_correction_on_the_result(simple_case: Case, tmp_path) 
     assert result.exit_code == 0, result.output
     assert "Write 'c: what to change'" in result.output
     record = json.loads(out.read_text())
-    assert [step["instruction"] for step in record["chain"]] == ["go left", "now slow down near the box"]
-    assert record["instruction"] == "go left; now slow down near the box"
+    assert [step["instruction"] for step in record["chain"]] == [
+        "go left by 0.2",
+        "now slow down near the box",
+    ]
+    assert record["instruction"] == "go left by 0.2; now slow down near the box"

@@ -158,7 +158,9 @@ def test_skills_mode_binds_the_library_and_takes_the_last_trajectory(
     simple_case: Case, sandbox: Sandbox
 ) -> None:
     code = "t = get_trajectory()\nt2 = shift(t, 'left', 0.3)\n"
-    session, _ = make_session(simple_case, sandbox, answer("1) Shift left.", code), mode="skills")
+    session, _ = make_session(
+        simple_case, sandbox, answer("1) Shift left.", code), mode="skills", leave_out_unasked=False
+    )
     session.draft()
     result = session.approve()
     assert result.ok and result.trajectory is not None
@@ -184,7 +186,7 @@ def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandb
 
     code = "modified_trajectory = shift(get_trajectory(), 'left', 0.3)\n"
     session, backend = make_session(
-        simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"]
+        simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"], leave_out_unasked=False
     )
     session.draft()
     result = session.approve()
@@ -241,7 +243,9 @@ def test_no_grammar_in_paper_mode_or_when_off(
 
 def test_the_result_carries_the_measured_effect_and_flags(simple_case: Case, sandbox: Sandbox) -> None:
     right = "t = get_trajectory()\nt = shift(t, 'right', 0.2)\nmodified_trajectory = t"
-    session, _ = make_session(simple_case, sandbox, answer("1) Shift.", right))  # the case says "go left"
+    session, _ = make_session(
+        simple_case.with_instruction("go left by 0.2"), sandbox, answer("1) Shift.", right)
+    )
     session.draft()
     payload = session.approve().to_dict()
     effect = payload["effect"]
@@ -268,7 +272,9 @@ def test_a_contradiction_gets_one_more_answer_kept_only_if_better(
     assert "contradicts the instruction" in backend.requests[1].messages[-1].content
     assert result.trajectory is not None
     went_left = "'left'" in second_code
-    assert bool(result.trajectory.positions[-1, 0] > 0) is went_left  # the better answer is kept, else the first
+    assert (
+        bool(result.trajectory.positions[-1, 0] > 0) is went_left
+    )  # the better answer is kept, else the first
     assert (result.contradictions == ()) is went_left
 
 

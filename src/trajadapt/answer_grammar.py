@@ -117,6 +117,7 @@ def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
             seq("closest_waypoint(t, ", Ref("point"), ")"),
         ),
         "profile": _quoted_words(PROFILES),
+        "height": Ref("number"),
     }
 
 

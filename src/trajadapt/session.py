@@ -37,6 +37,7 @@ from trajadapt.skills.explain import explain_code
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
+from trajadapt.unstated_amounts import replace_unstated_amounts
 
 TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
 
@@ -419,12 +420,14 @@ class AdaptationSession:
         raise AssertionError("unreachable")
 
     def _without_unasked_steps(self, plan: Plan) -> Plan:
-        """The plan without skill steps the user's words do not ask for (skills mode), noted for review."""
+        """The plan without skill steps and distances the user's words do not ask for (skills mode), noted."""
         self._left_out = []
         if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
             return plan
         names = [obj.name for obj in self.case.scene.objects]
-        code, self._left_out = leave_out_unasked(plan.code, self._asked, names)
+        code, left_out = leave_out_unasked(plan.code, self._asked, names)
+        code, replaced = replace_unstated_amounts(code, self._asked)
+        self._left_out = left_out + replaced
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

@@ -43,7 +43,8 @@ class Settings:
         grammar: in skills mode, constrain a local model's answer to the scene's answer grammar.
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
         leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
-            change, an extension past the goal, a pause, a loop, ...; skills mode), with a review note.
+            change, an extension past the goal, a pause, a loop, ...; skills mode), and replace a
+            distance the instruction never gives by its vague word or the default, with a review note.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
             model once more with the contradiction, and keep the new result if it contradicts less.
     """

@@ -23,9 +23,10 @@ SAMPLE = {  # one argument text per kind
     "number": "0.37",
     "count": "7",
     "flag": "False",
+    "height": "0.37",
 }
 SHOWN = {"point": "teapot", "points": "kettle", "direction": "left", "distance": "0.37", "fraction": "50%",
-         "part": "end", "waypoint": "goal", "profile": "decelerate", "number": "0.37", "count": "7"}  # fmt: skip
+         "part": "end", "waypoint": "goal", "profile": "decelerate", "number": "0.37", "count": "7", "height": "0.37"}  # fmt: skip
 
 
 @pytest.mark.parametrize("skill", [f for f in SKILLS if is_statement_skill(f)], ids=lambda f: f.__name__)
@@ -74,7 +75,7 @@ def test_the_session_explains_skills_itself_and_asks_the_model_otherwise(simple_
     skills = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
     numpy = "t = get_trajectory()\nt[:, 0] += 0.2\nmodified_trajectory = t"
     backend = ScriptedBackend(answers=[json.dumps({"high_level_plan": "1) a", "python_code": skills})])
-    session = AdaptationSession(simple_case, backend, sandbox)
+    session = AdaptationSession(simple_case.with_instruction("go left by 0.2"), backend, sandbox)
     session.draft()
     assert session.explain().source == "skills" and len(backend.requests) == 1
     assert session.approve().to_dict()["explanation"]["lines"][0].startswith("moves the path 0.2 left")

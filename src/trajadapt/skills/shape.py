@@ -15,6 +15,7 @@ from trajadapt.skills.core import (
     Axes,
     DirectionArg,
     DistanceArg,
+    HeightArg,
     PartArg,
     PointArg,
     TrajectoryArg,
@@ -84,7 +85,7 @@ def shift_part(
 
 
 def set_height(
-    trajectory: TrajectoryArg, height: float, keep_start: bool = True, keep_goal: bool = True
+    trajectory: TrajectoryArg, height: HeightArg, keep_start: bool = True, keep_goal: bool = True
 ) -> Array:
     """Fly the path at a constant height z, blending from/to the start and goal if they are kept."""
     t = as_trajectory(trajectory)
@@ -118,14 +119,14 @@ def keep_side(
     return t
 
 
-def stay_above(trajectory: TrajectoryArg, height: float) -> Array:
+def stay_above(trajectory: TrajectoryArg, height: HeightArg) -> Array:
     """Raise any waypoint below height z up to it."""
     t = as_trajectory(trajectory)
     t[:, 2] = np.maximum(t[:, 2], float(height))
     return t
 
 
-def stay_below(trajectory: TrajectoryArg, height: float) -> Array:
+def stay_below(trajectory: TrajectoryArg, height: HeightArg) -> Array:
     """Lower any waypoint above height z down to it."""
     t = as_trajectory(trajectory)
     t[:, 2] = np.minimum(t[:, 2], float(height))

@@ -1,0 +1,142 @@
+"""Amounts nobody gave: a distance the model made up is replaced by the instruction's own vague word.
+
+Rule 3 of the prompt says to use the numbers the user gives and a vague word otherwise, yet a small
+model writes ``shift(t, 'left', 0.2)`` for "go to the left": 0.2 is its guess, in units it cannot
+know (latte-dev's paths are 0.6 wide: a third of the scene). In skills code, a numeric literal passed
+where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``move_away``'s,
+``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
+converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
+or removed so that the skill's calibrated default applies. A review note says so.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+import threading
+from collections.abc import Iterable
+
+from trajadapt.answer_grammar import skill_parameters
+from trajadapt.skills import SKILLS
+from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
+
+BY_NAME = {function.__name__: function for function in SKILLS}
+UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
+INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
+_PARSE_LOCK = threading.Lock()  # ast.parse is not thread-safe on CPython 3.11.7 (python/cpython#106905)
+
+
+def stated_numbers(words: str) -> list[float]:
+    """Every number in the user's words."""
+    return [abs(float(n)) for n in NUMBER.findall(words)]
+
+
+def intensity_word(words: str) -> str | None:
+    """The user's vague amount word, if any ('a lot', 'slightly', ...)."""
+    lowered = words.lower()
+    return next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
+
+
+def is_stated(value: float, numbers: list[float]) -> bool:
+    """Whether ``value`` is one of the user's numbers (up to a unit conversion)."""
+    return any(abs(abs(value) - n * f) <= 1e-6 * max(1.0, n * f) for n in numbers for f in UNIT_FACTORS)
+
+
+def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with made-up distances replaced (see the module docstring), and a note per change."""
+    words = " ".join(asked)
+    numbers, word = stated_numbers(words), intensity_word(words)
+    lines, notes = [], []
+    for line in code.splitlines():
+        if _made_up_height(line, numbers):
+            notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
+            continue
+        changed = _replace_in_line(line, numbers, word)
+        if changed is not None and changed != line.strip():
+            notes.append(
+                f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so "
+                f"{repr(word) if word else 'the default amount'} is used"
+            )
+            line = line[: len(line) - len(line.lstrip())] + changed
+        lines.append(line)
+    return "\n".join(lines), notes
+
+
+def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
+    """The parsed line, its skill call and the skill's name, for a line ``name = skill(...)``."""
+    try:
+        with _PARSE_LOCK:
+            tree = ast.parse(line.strip())
+    except SyntaxError:
+        return None
+    if len(tree.body) != 1 or not isinstance(tree.body[0], ast.Assign):
+        return None
+    call = tree.body[0].value
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id in BY_NAME:
+        return tree, call, call.func.id
+    return None
+
+
+def _made_up_height(line: str, numbers: list[float]) -> bool:
+    """A step that sets an absolute height the user never gave (``set_height(t, 0.2923)``)."""
+    found = _skill_call(line)
+    if found is None:
+        return False
+    _, call, name = found
+    parameters = [(p.name, kind) for p, kind in skill_parameters(BY_NAME[name])]
+    given = list(zip(parameters, call.args, strict=False)) + [
+        ((k.arg, dict(parameters).get(k.arg or "")), k.value) for k in call.keywords
+    ]
+    return any(kind == "height" and _literal_unstated(value, numbers) for (_, kind), value in given)
+
+
+def _literal_unstated(node: ast.expr, numbers: list[float]) -> bool:
+    value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
+    return (
+        isinstance(value, ast.Constant)
+        and isinstance(value.value, int | float)
+        and not isinstance(value.value, bool)
+        and not is_stated(float(value.value), numbers)
+    )
+
+
+def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str | None:
+    found = _skill_call(line)
+    if found is None:
+        return None
+    tree, call, name = found
+    kinds = {p.name: kind for p, kind in skill_parameters(BY_NAME[name])}
+    names = list(kinds)
+    changed = False
+    for index, argument in enumerate(call.args):
+        if index < len(names) and _made_up(argument, kinds[names[index]], numbers):
+            call.args[index] = ast.Constant(word) if word else ast.Constant(None)
+            changed = True
+    for keyword in call.keywords:
+        if keyword.arg in kinds and _made_up(keyword.value, kinds[keyword.arg], numbers):
+            keyword.value = ast.Constant(word) if word else ast.Constant(None)
+            changed = True
+    if not changed:
+        return None
+    _drop_trailing_defaults(call, BY_NAME[name])
+    return ast.unparse(tree)
+
+
+def _drop_trailing_defaults(call: ast.Call, function: object) -> None:
+    """Remove arguments now None where None is the default: ``shift(t, 'left')``, not ``..., None)``."""
+    defaults = {p.name: p.default for p, _ in skill_parameters(function)}  # type: ignore[arg-type]
+    names = list(defaults)
+    while call.args and isinstance(call.args[-1], ast.Constant) and call.args[-1].value is None:
+        if defaults.get(names[len(call.args) - 1]) is not None:
+            break
+        call.args.pop()
+    call.keywords = [k for k in call.keywords if not _none_by_default(k, defaults)]
+
+
+def _none_by_default(keyword: ast.keyword, defaults: dict[str, object]) -> bool:
+    given_none = isinstance(keyword.value, ast.Constant) and keyword.value.value is None
+    return given_none and defaults.get(keyword.arg or "") is None
+
+
+def _made_up(node: ast.expr, kind: str, numbers: list[float]) -> bool:
+    return kind == "distance" and _literal_unstated(node, numbers)

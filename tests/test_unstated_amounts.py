@@ -1,0 +1,65 @@
+"""Distances and heights nobody gave are replaced by the user's vague word or the default, with a note."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.unstated_amounts import intensity_word, replace_unstated_amounts
+
+START, END = "t = get_trajectory()\n", "\nmodified_trajectory = t"
+
+
+def steps(code: str) -> list[str]:
+    return code.splitlines()[1:-1]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        ("go to the left", "t = shift(t, 'left', 0.2)", "t = shift(t, 'left')"),
+        ("go a lot to the left", "t = shift(t, 'left', 0.2)", "t = shift(t, 'left', 'a lot')"),
+        (
+            "pass further away from the box",
+            "t = move_away(t, detect_objects('box'), 10.0)",
+            "t = move_away(t, detect_objects('box'))",
+        ),  # fmt: skip
+        ("go on past the goal upwards", "t = extend(t, 20, 'up')", "t = extend(t, None, 'up')"),
+        ("zig-zag a little", "t = zigzag(t, amplitude=0.3)", "t = zigzag(t, amplitude='a little')"),
+    ],
+)
+def test_a_made_up_distance_is_replaced(instruction: str, step: str, expected: str) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [expected] and len(notes) == 1 and "gives no such number" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("go left by 0.2", "t = shift(t, 'left', 0.2)"),
+        ("go left by 20 cm", "t = shift(t, 'left', 0.2)"),  # cm read as m
+        ("go down by 0.1", "t = shift(t, 'down', -0.1)"),
+        (
+            "walk slower near the box",
+            "t = scale_speed(t, 0.65, near=detect_objects('box'))",
+        ),  # not a distance
+        ("keep 0.3 from the box", "t = avoid(t, detect_objects('box'), 0.3)"),
+        ("fly at a height of 0.5", "t = set_height(t, 0.5)"),
+    ],
+)
+def test_stated_numbers_and_other_kinds_stay(instruction: str, step: str) -> None:
+    assert replace_unstated_amounts(START + step + END, [instruction]) == (START + step + END, [])
+
+
+def test_a_made_up_height_leaves_the_step_out_and_feedback_counts() -> None:
+    code, notes = replace_unstated_amounts(
+        START + "t = shift(t, 'up', 'slightly')\nt = set_height(t, 0.2923)" + END, ["upper part"]
+    )
+    assert steps(code) == ["t = shift(t, 'up', 'slightly')"] and "no such height" in notes[0]
+    kept, _ = replace_unstated_amounts(
+        START + "t = set_height(t, 0.8)" + END, ["fly higher", "at 0.8 please"]
+    )
+    assert steps(kept) == ["t = set_height(t, 0.8)"]
+
+
+def test_the_longest_intensity_word_wins() -> None:
+    assert intensity_word("move very slightly left") == "very slightly" and intensity_word("go left") is None

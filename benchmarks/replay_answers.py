@@ -2,7 +2,7 @@
 
 Measures changes that act after the answer (leaving out unasked steps, replacing made-up amounts,
 skill constants, projection, the judges) on exactly the answers a run got: each stored result's
-plan and code are replayed by the scripted backend, in case order, with no repair round.
+plan and code are given back as the answer to that case's request, with no repair round.
 
 Run: .venv/bin/python benchmarks/replay_answers.py STORED_OUT CASES... --out NEW_OUT
 Then compare: .venv/bin/python benchmarks/compare_runs.py STORED_OUT NEW_OUT
@@ -14,10 +14,35 @@ import argparse
 import json
 from pathlib import Path
 
-from trajadapt.backends.scripted import ScriptedBackend
+from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
+from trajadapt.case import load_case
+from trajadapt.prompts import AXIS_CONVENTIONS, describe_environment
 from trajadapt.session import SessionSettings
+
+
+class StoredAnswers(Backend):
+    """Answers a request with the stored answer of the case its task text is about."""
+
+    name = "stored"
+
+    def __init__(self, answers: list[tuple[tuple[str, str], str]]) -> None:
+        super().__init__()
+        self.answers = answers  # ((the case's environment text, its instruction line), the answer)
+
+    @property
+    def model(self) -> str:
+        """Where the answers come from."""
+        return "stored answers"
+
+    def complete(self, request: ChatRequest) -> Completion:
+        """The stored answer whose case the request's task text names."""
+        task = request.messages[1].content
+        found = [
+            answer for (environment, line), answer in self.answers if environment in task and line in task
+        ]
+        return Completion(text=found[0] if found else "no stored answer", model=self.model)
 
 
 def main() -> None:
@@ -29,29 +54,23 @@ def main() -> None:
     parser.add_argument("cases", nargs="+", type=Path)
     parser.add_argument("--out", type=Path, required=True)
     args = parser.parse_args()
-    cases = discover_cases(args.cases)
     stored_config = BenchConfig(out_dir=args.stored)
-    answers, replayed = [], []
-    for case in cases:
+    answers, replayed, axes = [], [], "paper"
+    for case in discover_cases(args.cases):
         path = result_path(stored_config, case)
         if not path.is_file():
             continue
         record = json.loads(path.read_text())
-        steps = record.get("high_level_plan") or []
-        plan = " ".join(f"{i}) {step}" for i, step in enumerate(steps, start=1))
-        answers.append(
-            json.dumps({"high_level_plan": plan or "1) (no plan)", "python_code": record.get("code") or ""})
+        axes = (record.get("settings") or {}).get("axes", axes)
+        plan = " ".join(f"{i}) {step}" for i, step in enumerate(record.get("high_level_plan") or [], start=1))
+        answer = json.dumps(
+            {"high_level_plan": plan or "1) (no plan)", "python_code": record.get("code") or ""}
         )
+        loaded = load_case(case.path)
+        answers.append(((describe_environment(loaded), "INSTRUCTION: " + loaded.instruction), answer))
         replayed.append(case)
-    stored = json.loads(next(args.stored.rglob("*.result.json")).read_text()).get("settings") or {}
-    settings = SessionSettings(repair_attempts=0, format_retries=0)
-    if stored.get("axes") == "ovita":
-        from trajadapt.prompts import AXIS_CONVENTIONS
-
-        settings = SessionSettings(axes=AXIS_CONVENTIONS["ovita"], repair_attempts=0, format_retries=0)
-    records = run_benchmark(
-        replayed, ScriptedBackend(answers=answers), BenchConfig(out_dir=args.out, session=settings)
-    )
+    settings = SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0)
+    records = run_benchmark(replayed, StoredAnswers(answers), BenchConfig(out_dir=args.out, session=settings))
     write_report(args.out, records)
     print(f"replayed {len(records)} stored answers -> {args.out}")
 

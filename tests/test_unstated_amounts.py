@@ -63,3 +63,10 @@ def test_a_made_up_height_leaves_the_step_out_and_feedback_counts() -> None:
 
 def test_the_longest_intensity_word_wins() -> None:
     assert intensity_word("move very slightly left") == "very slightly" and intensity_word("go left") is None
+
+
+def test_numbers_written_as_words_count() -> None:
+    step = "t = move_away(t, detect_objects('table'), 2)"
+    code = START + step + END
+    assert replace_unstated_amounts(code, ["increase the distance by two times from the table"]) == (code, [])
+    assert replace_unstated_amounts(code, ["twice as far from the table"]) == (code, [])

@@ -26,9 +26,17 @@ INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default")
 _PARSE_LOCK = threading.Lock()  # ast.parse is not thread-safe on CPython 3.11.7 (python/cpython#106905)
 
 
+NUMBER_WORDS = {
+    "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
+    "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,
+    "half": 0.5, "quarter": 0.25,
+}  # fmt: skip
+
+
 def stated_numbers(words: str) -> list[float]:
-    """Every number in the user's words."""
-    return [abs(float(n)) for n in NUMBER.findall(words)]
+    """Every number in the user's words, also spelled out ('two times', 'twice', 'half')."""
+    spelled = [NUMBER_WORDS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in NUMBER_WORDS]
+    return [abs(float(n)) for n in NUMBER.findall(words)] + spelled
 
 
 def intensity_word(words: str) -> str | None:

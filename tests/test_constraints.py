@@ -84,7 +84,9 @@ def bounded_case(simple_case: Case) -> Case:
 def test_violation_goes_back_with_numbers(bounded_case: Case, sandbox: Sandbox) -> None:
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)"),
                                        answer("modified_trajectory = shift(get_trajectory(), 'left', 0.15)")])  # fmt: skip
-    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(project=False))
+    session = AdaptationSession(
+        bounded_case, backend, sandbox, SessionSettings(project=False, leave_out_unasked=False)
+    )
     session.draft()
     result = session.approve()
     assert result.ok and result.attempts == 2
@@ -96,7 +98,7 @@ def test_projection_by_default_keeps_the_room_and_says_what_bound_it(
     bounded_case: Case, sandbox: Sandbox
 ) -> None:
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)")])
-    session = AdaptationSession(bounded_case, backend, sandbox)
+    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(leave_out_unasked=False))
     session.draft()
     result = session.approve()
     assert result.ok and result.attempts == 1 and result.trajectory is not None

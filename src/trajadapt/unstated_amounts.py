@@ -13,17 +13,16 @@ from __future__ import annotations
 
 import ast
 import re
-import threading
 from collections.abc import Iterable
 
 from trajadapt.answer_grammar import skill_parameters
+from trajadapt.code_parse import parse_code
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 
 BY_NAME = {function.__name__: function for function in SKILLS}
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
 INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
-_PARSE_LOCK = threading.Lock()  # ast.parse is not thread-safe on CPython 3.11.7 (python/cpython#106905)
 
 
 NUMBER_WORDS = {
@@ -73,8 +72,7 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
     """The parsed line, its skill call and the skill's name, for a line ``name = skill(...)``."""
     try:
-        with _PARSE_LOCK:
-            tree = ast.parse(line.strip())
+        tree = parse_code(line.strip())
     except SyntaxError:
         return None
     if len(tree.body) != 1 or not isinstance(tree.body[0], ast.Assign):

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import ast
 import inspect
-import threading
 from collections.abc import Callable
 from typing import Any
 
+from trajadapt.code_parse import parse_code
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, PART_WORDS
 from trajadapt.skills.objects import CLOSER_FRACTIONS
@@ -60,16 +60,10 @@ class _Unexplained(ValueError):
     """A piece of code that is not a skill call with readable arguments."""
 
 
-# CPython 3.11 before 3.11.8 can fail ast.parse called from several threads at once ("AST constructor
-# recursion depth mismatch", python/cpython#106905); the review server explains plans on many threads.
-_PARSE_LOCK = threading.Lock()
-
-
 def explain_code(code: str) -> list[str] | None:
     """One sentence per step of skills code, or None when the code is not only skill calls."""
     try:
-        with _PARSE_LOCK:
-            tree = ast.parse(code)
+        tree = parse_code(code)
         return [line for statement in tree.body if (line := _statement(statement)) is not None]
     except (SyntaxError, _Unexplained):
         return None

@@ -53,11 +53,13 @@ def test_an_unknown_choice_in_the_environment_is_a_clear_error(
 
 def test_the_choices_match_what_the_code_knows() -> None:
     from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+    from trajadapt.robot_limits import ROBOT_NAMES
     from trajadapt.settings import CHOICES
 
     assert set(CHOICES["axes"]) == set(AXIS_CONVENTIONS)
     assert set(CHOICES["mode"]) == set(PROMPT_MODES)
     assert set(CHOICES["isolation"]) == {"auto", "bwrap", "process"}
+    assert set(CHOICES["robot"]) == set(ROBOT_NAMES)
 
 
 def test_an_unknown_axes_variable_fails_the_command_in_words(
@@ -85,6 +87,7 @@ ENVIRONMENT = {
     "EXAMPLES": "5",
     "LEAVE_OUT_UNASKED": "no",
     "REPAIR_CONTRADICTIONS": "yes",
+    "ROBOT": "drone",
 }
 SEEN = {
     "axes": "ovita",
@@ -98,6 +101,7 @@ SEEN = {
     "examples": 5,
     "leave_out_unasked": False,
     "repair_contradictions": True,
+    "robot": "drone",
 }
 
 

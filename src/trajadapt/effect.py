@@ -3,7 +3,8 @@
 ``measure_effect`` compares the original and the adapted trajectory: start and goal moved (how far,
 which way in the stated axis convention), the largest and mean displacement and where along the
 path, the closest distance to each object and the speed near it before and after, mean speed, path
-length, waypoint count and time to traverse. ``contradictions`` reads the instruction for the few
+length, waypoint count and time to traverse; where the result was projected onto constraints, which
+constraint moved which waypoints. ``contradictions`` reads the instruction for the few
 things that can be checked without an LLM (an object named whose distance did not change, "slower"
 while the speed rose, "left" while the path moved right) and flags them for the reviewer.
 """
@@ -17,6 +18,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 import numpy.typing as npt
 
+from trajadapt.constraints import ConstraintMove
 from trajadapt.scene import SceneObject
 from trajadapt.skills.core import DIRECTION_SYNONYMS, DIRECTIONS, Axes, extent, progress
 from trajadapt.trajectory import Trajectory
@@ -60,6 +62,7 @@ class Effect:
     duration_before: float | None
     duration_after: float | None
     objects: tuple[ObjectEffect, ...]
+    constraint_moves: tuple[ConstraintMove, ...] = ()
 
     def to_dict(self) -> dict[str, object]:
         """The result file's ``effect`` field."""
@@ -86,6 +89,7 @@ class Effect:
             f"{o.speed_near_before:.3g} -> {o.speed_near_after:.3g}"
             for o in self.objects
         ]
+        lines += [f"projected: {move.describe()}" for move in self.constraint_moves]
         return lines
 
 

@@ -5,10 +5,14 @@ to the LLM's trajectory while keeping its shape smooth:
 
     minimise  |p - a|^2 + w |D2 p|^2   over positions p (N x 3), a = the adapted positions,
     subject to  lower <= p <= upper, fixed start/goal where asked,
-                n_i . (p_i - c) >= d for waypoints near each object (clearance, linearised at a).
+                n_i . (p_i - c) >= d for waypoints near each object (clearance, linearised at a),
+                r_min <= n_i . (p_i - b) <= r_max for waypoints near the edge of an arm's reach.
 
-Clearance is not convex, so the linearised problem is solved again from its own answer a few times.
-Speeds are not changed (they are clipped to ``max_speed`` if one is set).
+Clearance and the inner reach are not convex, so the linearised problem is solved again from its
+own answer a few times; what the linearisation leaves is closed by a direct push, which is smoothed
+once more and kept only if the smoothed path breaks nothing new. Speeds are not changed (they are
+clipped to ``max_speed`` if one is set). ``Projection.moves`` says which constraint moved which
+waypoints; the rest of the moved waypoints moved to keep the path smooth.
 """
 
 from __future__ import annotations
@@ -19,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.constraints import Constraints, find_violations
+from trajadapt.constraints import ConstraintMove, Constraints, Violation, find_violations, new_violations
 from trajadapt.errors import DependencyNotInstalled
 from trajadapt.scene import Scene
 from trajadapt.skills.core import Array
@@ -27,15 +31,17 @@ from trajadapt.skills.objects import avoid, sideways_from
 
 SMOOTHING_WEIGHT = 4.0
 ROUNDS = 4
+REACH_MARGIN = 0.9  # waypoints beyond this share of the outer reach (or inside 1/share of the inner) get rows
 
 
 @dataclass(frozen=True)
 class Projection:
-    """The projected trajectory and what changed."""
+    """The projected trajectory and what changed: per constraint, and what is still broken."""
 
     trajectory: Array
     largest_move: float
     remaining: tuple[str, ...]
+    moves: tuple[ConstraintMove, ...] = ()
 
     def describe(self) -> str:
         """One line for the reviewer."""
@@ -55,24 +61,83 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
         projected = np.c_[positions, trajectory[:, 3]]
         if not find_violations(projected, original, scene, constraints):
             break
-    if constraints.min_clearance is not None and find_violations(projected, original, scene, constraints):
-        projected = _finish_clearance(projected, scene, constraints)
+    if find_violations(projected, original, scene, constraints):
+        projected = _finish(projected, trajectory, original, scene, constraints)
+    for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
+        if keep:
+            projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
     remaining = tuple(v.message for v in find_violations(projected, original, scene, constraints))
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
-    return Projection(projected, largest, remaining)
+    broken = new_violations(trajectory, original, scene, constraints)
+    return Projection(projected, largest, remaining, constraint_moves(trajectory, projected, broken))
 
 
-def _finish_clearance(trajectory: Array, scene: Scene, constraints: Constraints) -> Array:
-    """Close the last small clearance gaps the linearisation left, then clip to the bounds."""
-    names = set(constraints.clearance_objects)
-    centres = [np.asarray(o.position) for o in scene.objects if not names or o.name in names]
-    assert constraints.min_clearance is not None
-    fixed = avoid(trajectory, centres, constraints.min_clearance)
-    lower = np.array(constraints.lower)
-    upper = np.array(constraints.upper)
-    fixed[:, :3] = np.clip(fixed[:, :3], lower, upper)
+def constraint_moves(before: Array, after: Array, broken: list[Violation]) -> tuple[ConstraintMove, ...]:
+    """Which constraint moved which waypoints, and how far; the other moved ones kept the path smooth."""
+    moved = np.linalg.norm(after[:, :3] - before[:, :3], axis=1)
+    slowed = before[:, 3] - after[:, 3]
+    tolerance = 1e-6 * max(float(np.ptp(before[:, :3], axis=0).max()), 1.0)
+    moves, attributed = [], set()
+    for violation in broken:
+        indices = tuple(i for i in violation.waypoints if i < len(after))
+        if not indices:
+            continue
+        change = slowed if violation.key == "speed" else moved
+        name = "speed limit" if violation.key == "speed" else _constraint_name(violation)
+        moves.append(ConstraintMove(name, indices, float(change[list(indices)].max())))
+        attributed |= set(indices) if violation.key != "speed" else set()
+    others = tuple(int(i) for i in np.flatnonzero(moved > tolerance) if int(i) not in attributed)
+    if others:
+        moves.append(
+            ConstraintMove(
+                "smoothness (neighbours of moved waypoints)", others, float(moved[list(others)].max())
+            )
+        )
+    return tuple(moves)
+
+
+def _constraint_name(violation: Violation) -> str:
+    """'bounds:x:above' -> 'x upper bound'; 'clearance:box' -> 'clearance from box'; others as keyed."""
+    kind, _, rest = violation.key.partition(":")
+    if kind == "bounds":
+        axis, _, side = rest.partition(":")
+        return f"{axis} {'upper' if side == 'above' else 'lower'} bound"
+    if kind == "clearance":
+        return f"clearance from {rest}"
+    if kind == "reach":
+        return f"arm reach ({'outer' if rest == 'far' else 'inner'})"
+    return f"fixed {kind}"
+
+
+def _finish(
+    projected: Array, target: Array, original: Array, scene: Scene, constraints: Constraints
+) -> Array:
+    """Close what the linearisation left with a direct push; smooth that once more if it stays valid."""
+    pushed = _push_into(projected, original, scene, constraints)
+    smoothed = np.c_[_solve(pushed[:, :3], target[:, :3], original, scene, constraints), pushed[:, 3]]
+    smoothed = _push_into(smoothed, original, scene, constraints)
+    still = len(find_violations(pushed, original, scene, constraints))
+    return smoothed if len(find_violations(smoothed, original, scene, constraints)) <= still else pushed
+
+
+def _push_into(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
+    """Push waypoints out of objects' clearance, into the reach shell and the bounds; keep fixed ends."""
+    fixed = trajectory.copy()
+    centres = [np.asarray(o.position) for o in scene.objects if constraints.keeps_clear_of(o.name)]
+    if constraints.min_clearance is not None and centres:
+        fixed = avoid(fixed, centres, constraints.min_clearance)
+    if constraints.reach is not None:
+        base = np.asarray(constraints.reach.base)
+        offsets = fixed[:, :3] - base
+        distance = np.maximum(np.linalg.norm(offsets, axis=1, keepdims=True), 1e-12)
+        wanted = np.clip(distance, constraints.reach.minimum, constraints.reach.maximum)
+        fixed[:, :3] = base + offsets * wanted / distance
+    fixed[:, :3] = np.clip(fixed[:, :3], np.array(constraints.lower), np.array(constraints.upper))
+    for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
+        if keep:
+            fixed[index, :3] = original[index, :3]
     return fixed
 
 
@@ -119,6 +184,10 @@ def _constraint_rows(
         rows.append(sparse.csr_matrix(row[None, :]))
         low.append(np.array([bound]))
         high.append(np.array([1e9]))
+    for row, row_low, row_high in _reach_rows(around, constraints):
+        rows.append(sparse.csr_matrix(row[None, :]))
+        low.append(np.array([row_low]))
+        high.append(np.array([row_high]))
     return sparse.vstack(rows, format="csc"), np.concatenate(low), np.concatenate(high)
 
 
@@ -132,13 +201,12 @@ def _clearance_rows(around: Array, scene: Scene, constraints: Constraints) -> li
     if constraints.min_clearance is None:
         return []
     clearance = constraints.min_clearance * 1.05  # a margin: the linearisation moves with the path
-    names = set(constraints.clearance_objects)
     track = np.c_[around, np.zeros(len(around))]
     heading = np.gradient(around, axis=0)
     heading /= np.maximum(np.linalg.norm(heading, axis=1, keepdims=True), 1e-12)
     rows = []
     for obj in scene.objects:
-        if names and obj.name not in names:
+        if not constraints.keeps_clear_of(obj.name):
             continue
         centre = np.asarray(obj.position)
         offsets = around - centre
@@ -151,6 +219,29 @@ def _clearance_rows(around: Array, scene: Scene, constraints: Constraints) -> li
             row = np.zeros(3 * len(around))
             row[3 * index : 3 * index + 3] = side[index]
             rows.append((row, float(side[index] @ centre + np.sqrt(clearance**2 - along[index] ** 2))))
+    return rows
+
+
+def _reach_rows(around: Array, constraints: Constraints) -> list[tuple[np.ndarray, float, float]]:
+    """Rows keeping waypoints near the edge of the reach shell inside it, along their direction from the base.
+
+    Along the unit vector n from the base to a waypoint, r_min <= n . (p - b) <= r_max: the outer
+    side is the tangent plane of a ball (it holds the ball), the inner side a plane outside the
+    inner ball; both are solved again from the new positions.
+    """
+    reach = constraints.reach
+    if reach is None:
+        return []
+    base = np.asarray(reach.base)
+    offsets = around - base
+    distance = np.linalg.norm(offsets, axis=1)
+    near_edge = (distance > REACH_MARGIN * reach.maximum) | (distance < reach.minimum / REACH_MARGIN)
+    rows = []
+    for index in np.flatnonzero(near_edge & (distance > 1e-12)):
+        direction = offsets[index] / distance[index]
+        row = np.zeros(3 * len(around))
+        row[3 * index : 3 * index + 3] = direction
+        rows.append((row, float(direction @ base + reach.minimum), float(direction @ base + reach.maximum)))
     return rows
 
 

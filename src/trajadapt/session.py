@@ -16,7 +16,7 @@ from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
 from trajadapt.checks import ReviewNote, review_notes, validate_result
-from trajadapt.constraints import Constraints, constraints_for, new_violations
+from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
 from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
     AnswerParseError,
@@ -28,6 +28,7 @@ from trajadapt.errors import (
 from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
+from trajadapt.robot_limits import robot_constraints
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
@@ -58,6 +59,7 @@ class SessionSettings:
     repair_attempts: int = 2
     format_retries: int = 1
     constraints: Constraints | None = None
+    robot: str = "none"
     check_constraints: bool = True
     project: bool = True
     temperature: float = 0.0
@@ -77,6 +79,7 @@ class SessionSettings:
             mode=settings.mode,
             repair_attempts=settings.repair_attempts,
             constraints=constraints,
+            robot=settings.robot,
             project=settings.project,
             temperature=settings.temperature,
             seed=settings.seed,
@@ -98,6 +101,8 @@ class SessionSettings:
             "repair_attempts": self.repair_attempts,
             "waypoints_in_prompt": self.waypoints_in_prompt,
             "project": self.project,
+            "robot": self.robot,
+            "constraints": list(self.constraints.sources) if self.constraints else [],
             "grammar": self.grammar,
             "examples": self.examples,
             "leave_out_unasked": self.leave_out_unasked,
@@ -255,6 +260,7 @@ class AdaptationSession:
         self._tokens = {"prompt": 0, "completion": 0}
         self._last_stdout = ""
         self._last_notes: tuple[str, ...] = ()
+        self._last_moves: tuple[ConstraintMove, ...] = ()
         self._asked: list[str] = [case.instruction]  # the user's words: instruction, then feedback
         self._left_out: list[str] = []  # notes on steps left out of the current plan
         self._model_explanations: dict[str, Explanation] = {}
@@ -460,7 +466,7 @@ class AdaptationSession:
         result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene, options)
         self._exec_s += result.duration_s
         outcome: Trajectory | str
-        self._last_notes = result.notes
+        self._last_notes, self._last_moves = result.notes, ()
         if result.error is not None or result.rows is None:
             outcome = result.error.describe() if result.error else "the code produced no trajectory"
         else:
@@ -482,7 +488,9 @@ class AdaptationSession:
         """The trajectory if it keeps the constraints (projected onto them if asked), else the problem."""
         if not self.settings.check_constraints:
             return trajectory
-        limits = constraints_for(self.case.scene, self.settings.constraints)
+        robot = robot_constraints(self.settings.robot)
+        asked = " ".join(self._asked)
+        limits = constraints_for(self.case.scene, self.settings.constraints, robot, asked)
         original = self.case.trajectory.array
         violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations and self.settings.project:
@@ -492,6 +500,7 @@ class AdaptationSession:
             except DependencyNotInstalled as exc:
                 return f"ConstraintViolation: {broken} ({exc})"
             self._last_notes += (f"{projection.describe()} (the code's result broke: {broken})",)
+            self._last_moves = projection.moves
             trajectory = validate_result(projection.trajectory)
             violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations:
@@ -540,6 +549,7 @@ class AdaptationSession:
             return {}
         axes = Axes.from_positive_x(self.settings.axes.positive_x)
         effect = measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes)
+        effect = replace(effect, constraint_moves=self._last_moves)
         return {
             "effect": effect,
             "contradictions": tuple(contradictions(" ".join(self._asked), effect, axes)),

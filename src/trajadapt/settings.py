@@ -45,6 +45,8 @@ class Settings:
         leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
             change, an extension past the goal, a pause, a loop, ...; skills mode), and replace a
             distance the instruction never gives by its vague word or the default, with a review note.
+        robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
+            or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
             model once more with the contradiction, and keep the new result if it contradicts less.
     """
@@ -65,6 +67,7 @@ class Settings:
     examples: int = 3
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
+    robot: str = "none"
 
     @property
     def log_path(self) -> Path:
@@ -92,6 +95,7 @@ ENV_FIELDS = {
     "examples": int,
     "leave_out_unasked": bool,
     "repair_contradictions": bool,
+    "robot": str,
 }
 
 
@@ -115,6 +119,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "axes": ("ovita", "paper"),
     "mode": ("paper", "skills"),
     "isolation": ("auto", "bwrap", "process"),
+    "robot": ("arm", "drone", "ground", "none"),
 }
 
 

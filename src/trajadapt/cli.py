@@ -23,6 +23,7 @@ from trajadapt.cli_common import (
     examples_option,
     grammar_option,
     isolation_of,
+    limits_options,
     make_backend,
     option_option,
 )
@@ -153,8 +154,7 @@ def cli(debug: bool) -> None:
     help="Project a result that breaks the stated constraints onto them (the default; smooth least "
     "squares, needs [qp]), or send it back for repair (--no-project).",
 )
-@click.option("--clearance", type=float, default=None, help="Minimum distance to keep from every object.")
-@click.option("--max-speed", type=float, default=None, help="Highest allowed velocity.")
+@limits_options
 @click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
 @click.option(
     "--simulate",
@@ -184,8 +184,8 @@ def adapt(
     temperature: float | None,
     seed: int | None,
     project_onto: bool | None,
-    clearance: float | None,
-    max_speed: float | None,
+    robot: str | None,
+    limits: Constraints,
     no_log: bool,
     simulate_on: str | None,
 ) -> None:
@@ -194,13 +194,13 @@ def adapt(
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
-                 "project": project_onto, "examples": examples, "grammar": grammar}  # fmt: skip
+                 "project": project_onto, "examples": examples, "grammar": grammar,
+                 "robot": robot}  # fmt: skip
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
     case = _load_case(case_file, trajectory_file, scene_file, instruction, (topic, waypoints))
     chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
     plot_file = plot_file or sibling_file(out, ".png")
-    limits = Constraints(min_clearance=clearance, max_speed=max_speed)
     result, record = _run_session(case, chosen, settings, yes, limits)
     _save(result, record, out, plot_file, settings)
     if not result.ok:

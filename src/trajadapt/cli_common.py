@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any, TypeVar
 
 import click
 
@@ -10,6 +13,7 @@ from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import get_backend
 from trajadapt.console import PrepareBar
 from trajadapt.errors import InputError
+from trajadapt.robot_limits import ROBOT_LIMITS, ROBOT_NAMES, user_constraints
 from trajadapt.sandbox.runner import Isolation
 from trajadapt.settings import Settings
 
@@ -29,6 +33,38 @@ grammar_option = click.option(
     help="Constrain a local model's answer to the skill calls and object names of the scene (skills "
     "mode; the default), or let it write any code.",
 )  # fmt: skip
+
+Command = TypeVar("Command", bound=Callable[..., Any])
+LIMIT_FLAGS = ("workspace", "reach_base", "reach", "clearance", "max_speed", "fixed_ends")
+
+
+def limits_options(command: Command) -> Command:
+    """Add the robot and constraint flags; the command gets ``robot`` and ``limits`` (a Constraints)."""
+    robots = "; ".join(f"{name}: {limits.description}" for name, limits in ROBOT_LIMITS.items())
+    flags = [
+        click.option("--robot", type=click.Choice(ROBOT_NAMES), default=None,
+                     help=f"Whose limits every result keeps (default none). {robots}."),
+        click.option("--workspace", type=(float,) * 6, default=None,
+                     metavar="XMIN XMAX YMIN YMAX ZMIN ZMAX", help="A box every waypoint stays in."),
+        click.option("--reach-base", type=(float,) * 3, default=None, metavar="X Y Z",
+                     help="Your arm's base (with --reach)."),
+        click.option("--reach", type=(float,) * 2, default=None, metavar="MIN MAX",
+                     help="How near and how far from --reach-base the arm reaches."),
+        click.option("--clearance", type=float, default=None,
+                     help="Distance kept from every object the instruction does not ask to approach."),
+        click.option("--max-speed", type=float, default=None, help="Highest allowed velocity."),
+        click.option("--fixed-ends", type=click.Choice(["none", "start", "goal", "both"]), default="none",
+                     show_default=True, help="Keep the start, the goal or both where they are."),
+    ]  # fmt: skip
+
+    @functools.wraps(command)
+    def run(**kwargs: Any) -> Any:
+        given = {name: kwargs.pop(name) for name in LIMIT_FLAGS}
+        return command(limits=user_constraints(**given), **kwargs)
+
+    for flag in reversed(flags):
+        run = flag(run)
+    return run  # type: ignore[return-value]
 
 
 def backend_options(pairs: tuple[tuple[str, str], ...]) -> dict[str, str]:

@@ -10,12 +10,13 @@ from typing import TYPE_CHECKING
 
 import click
 
-from trajadapt.cli_common import backend_option, isolation_of, make_backend, option_option
+from trajadapt.cli_common import backend_option, isolation_of, limits_options, make_backend, option_option
+from trajadapt.constraints import Constraints
 from trajadapt.errors import DependencyNotInstalled, InputError
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
-from trajadapt.settings import load_settings
+from trajadapt.settings import Settings, load_settings
 from trajadapt.store import Store
 
 if TYPE_CHECKING:
@@ -40,20 +41,23 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
               help="Use this GGUF file with the local backend.")  # fmt: skip
 @click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+@limits_options
 def serve(
     host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None,
     allowed_hosts: tuple[str, ...], backend: str | None, options: tuple[tuple[str, str], ...],
-    model_path: Path | None, mode: str | None, axes: str | None,
+    model_path: Path | None, mode: str | None, axes: str | None, robot: str | None, limits: Constraints,
 ) -> None:  # fmt: skip
     """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
 
     Sessions are logged to the same SQLite log as 'adapt', so a restarted server lists earlier ones.
     Binds to 127.0.0.1; another address needs --allow-remote, and then every request needs the token.
     The server answers only to loopback names, the bound address and --allowed-host names (a guard
-    against DNS rebinding), and reads no request body over 8 MB.
+    against DNS rebinding), and reads no request body over 8 MB. The robot and limit flags are the
+    page's defaults; its Limits fields change them per session.
     """
     token = _access_token(host, allow_remote, token)
-    app = _build_app(cases_dir, backend, options, model_path, mode, axes, token, (host, *allowed_hosts))
+    settings = load_settings({"backend": backend, "mode": mode, "axes": axes, "robot": robot})
+    app = _build_app(settings, cases_dir, options, model_path, limits, token, (host, *allowed_hosts))
     import uvicorn
 
     query = f"/?token={token}" if token else "/"
@@ -82,12 +86,11 @@ def _is_loopback(host: str) -> bool:
 
 
 def _build_app(
+    settings: Settings,
     cases_dir: Path | None,
-    backend: str | None,
     options: tuple[tuple[str, str], ...],
     model_path: Path | None,
-    mode: str | None,
-    axes: str | None,
+    limits: Constraints,
     token: str | None,
     allowed_hosts: tuple[str, ...],
 ) -> FastAPI:
@@ -100,9 +103,8 @@ def _build_app(
         ) from exc
     if cases_dir is not None and not cases_dir.is_dir():
         raise InputError(f"--cases {cases_dir}: not a folder")
-    settings = load_settings({"backend": backend, "mode": mode, "axes": axes})
     convention = AXIS_CONVENTIONS[settings.axes]
-    session_settings = SessionSettings.from_settings(settings)
+    session_settings = SessionSettings.from_settings(settings, limits)
     services = Services(
         backend=make_backend(settings, options, model_path),
         sandbox=Sandbox(isolation=isolation_of(settings)),

@@ -121,3 +121,22 @@ def test_feedback_on_the_approved_result_chains_and_the_page_gets_effect_and_exp
         assert chain[0]["trajectory"] == first
         assert abs(state["result"]["modified_trajectory"][-1][0] - (first[-1][0] + 0.3)) < 1e-9
         assert client.get(f"/api/sessions/{sid}/result").json()["chain"] == chain
+
+
+def test_the_pages_limits_bind_the_session_and_the_effect_says_what_they_moved(client: TestClient) -> None:
+    limits = {"workspace": [-1, 0.05, -5, 5, -5, 5], "fixed_ends": "start"}
+    response = client.post("/api/sessions", json={"case": CASE, "instruction": "go left", "limits": limits})
+    sid = response.json()["id"]
+    wait_idle(client, sid)
+    client.post(f"/api/sessions/{sid}/approve")
+    result = wait_idle(client, sid)["result"]
+    assert max(row[0] for row in result["modified_trajectory"]) <= 0.05 + 1e-6
+    assert result["modified_trajectory"][0][:3] == CASE["trajectory"][0][:3]
+    assert any(line.startswith("projected: x upper bound") for line in result["effect"]["in_words"])
+    assert "your workspace -1 0.05 -5 5 -5 5" in result["settings"]["constraints"]
+    for bad, words in (
+        ({"robot": "tank"}, "no robot limits called 'tank'"),
+        ({"workspace": [1, 0, 0, 1, 0, 1]}, "each minimum must be at most its maximum"),
+    ):
+        refused = client.post("/api/sessions", json={"case": CASE, "instruction": "go left", "limits": bad})
+        assert refused.status_code == 400 and words in refused.json()["error"]

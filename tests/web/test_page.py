@@ -88,3 +88,34 @@ def test_errors_show_on_the_page(server_url: str) -> None:
         expect(page.locator("#error")).to_contain_text("the file is not JSON")
         expect(page.locator("#error")).not_to_contain_text("Traceback")
         browser.close()
+
+
+def test_limits_toggle_explanation_and_effect_in_chromium(server_url: str) -> None:
+    from playwright.sync_api import expect, sync_playwright
+
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        page = browser.new_page(viewport={"width": 1280, "height": 900})
+        page.goto(server_url)
+        page.select_option("#case-list", "line.json")
+        expect(page.locator("#case-name")).to_contain_text("11 waypoints")
+        page.click("#limits summary")
+        page.fill("#limit-workspace", "-1 0.35 -5 5 -5 5")
+        page.select_option("#limit-fixed-ends", "start")
+        page.fill("#instruction", "go left")
+        page.click("#ask")
+        expect(page.locator("#explanation-box")).to_be_visible()
+        expect(page.locator("#explanation li").first).to_contain_text("left")
+        expect(page.locator("#feedback-on option[value=current]")).to_be_disabled()
+        page.click("#approve")
+        expect(page.locator("#effect")).to_contain_text("mostly left")
+        page.select_option("#feedback-on", "current")
+        page.fill("#feedback", "further left, and slower")
+        page.click("#send-feedback")
+        expect(page.locator("#history li").last).to_contain_text("On the result: further left, and slower")
+        page.click("#approve")
+        expect(page.locator("#effect")).to_contain_text("projected: x upper bound: waypoints")
+        x = page.evaluate("document.getElementById('plot').data.find(t => t.name === 'proposed').x")
+        assert max(x) <= 0.35 + 1e-9 and x[0] == 0  # 0.1 then 0.3 more would be 0.4: the box holds it
+        expect(page.locator("#error")).to_be_hidden()
+        browser.close()

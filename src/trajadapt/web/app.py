@@ -20,7 +20,9 @@ from fastapi.responses import FileResponse, JSONResponse, Response
 from pydantic import BaseModel
 
 from trajadapt.case import Case, case_from_dict
+from trajadapt.constraints import Constraints
 from trajadapt.errors import BackendError, BackendTimeout, InputError, SessionStateError, TrajadaptError
+from trajadapt.robot_limits import user_constraints
 from trajadapt.safe_text import safe_text
 from trajadapt.scene import NAME_CHARS
 from trajadapt.trajectory import parse_json_text
@@ -40,12 +42,29 @@ STATIC = Path(__file__).parent / "static"
 MAX_UPLOAD_BYTES = MAX_BODY_BYTES
 
 
+class LimitsBody(BaseModel):
+    """The page's limits: a robot's defaults and the user's own; unset fields keep the server's."""
+
+    robot: str | None = None
+    clearance: float | None = None
+    max_speed: float | None = None
+    fixed_ends: Literal["none", "start", "goal", "both"] = "none"
+    workspace: tuple[float, float, float, float, float, float] | None = None
+    reach_base: tuple[float, float, float] | None = None
+    reach: tuple[float, float] | None = None
+
+    def constraints(self) -> Constraints:
+        """The user's limits, checked (raises InputError in words)."""
+        return user_constraints(**self.model_dump(exclude={"robot"}))
+
+
 class StartBody(BaseModel):
-    """Start a session on a case with an instruction."""
+    """Start a session on a case with an instruction, under the page's limits."""
 
     case: dict[str, Any]
     instruction: str
     name: str = "case"
+    limits: LimitsBody | None = None
 
 
 class TextBody(BaseModel):
@@ -181,7 +200,8 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
         case = case_from_dict(body.case, "the case", name=body.name).with_instruction(body.instruction)
         if not case.instruction:
             raise InputError("type an instruction first")
-        live = _new_live(state, case)
+        limits = body.limits or LimitsBody()
+        live = _new_live(state, case, limits.constraints(), limits.robot)
         return live.to_dict()
 
     @app.get("/api/sessions/{session_id}")
@@ -240,8 +260,8 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
         return live.to_dict()
 
 
-def _new_live(state: ServerState, case: Case) -> LiveSession:
-    session = state.services.new_session(case)
+def _new_live(state: ServerState, case: Case, limits: Constraints, robot: str | None) -> LiveSession:
+    session = state.services.new_session(case, limits, robot)
     live = LiveSession(case=case, session=session, status="ready")
     session.report_progress_to(live.say)
 

@@ -6,14 +6,16 @@ import contextlib
 import os
 import threading
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from trajadapt.backends.base import Backend
 from trajadapt.case import Case, load_case
 from trajadapt.chain import AdaptationChain
+from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError
+from trajadapt.robot_limits import robot_constraints
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, SessionSettings
 from trajadapt.store import Store
@@ -31,9 +33,24 @@ class Services:
     cases_dir: Path | None = None
     simulator: Callable[[AdaptationResult, str, Path], dict[str, Any]] | None = None
 
-    def new_session(self, case: Case) -> AdaptationChain:
-        """A session on ``case`` (a chain: corrections may build on its results), logged to the shared log."""
-        return AdaptationChain(case, self.backend, self.sandbox, self.settings, self.store)
+    def new_session(
+        self, case: Case, limits: Constraints | None = None, robot: str | None = None
+    ) -> AdaptationChain:
+        """A session on ``case`` (a chain: corrections may build on its results), logged to the shared log.
+
+        ``limits`` and ``robot`` (the page's) take the place of the server's where they set a value.
+
+        Raises:
+            InputError: no robot has the name ``robot``.
+        """
+        settings = self.settings
+        if robot is not None:
+            robot_constraints(robot)  # the name is checked here, before any LLM call
+            settings = replace(settings, robot=robot)
+        if limits is not None:
+            own = settings.constraints or Constraints()
+            settings = replace(settings, constraints=own.merged_with(limits))
+        return AdaptationChain(case, self.backend, self.sandbox, settings, self.store)
 
     def case_names(self) -> list[str]:
         """Case files under the cases folder, as paths relative to it."""

@@ -67,8 +67,19 @@ $("case-file").addEventListener("change", () => guarded(async () => {
 
 // ---- sessions ----------------------------------------------------------------------------------
 
+// The Limits fields as the API's ``limits``: empty fields are left out (the server's defaults hold).
+function limits() {
+  const number = (id) => ($(id).value === "" ? null : Number($(id).value));
+  const box = $("limit-workspace").value.trim();
+  const workspace = box ? box.split(/[\s,]+/).map(Number) : null;
+  if (workspace && workspace.length !== 6) throw new Error("the workspace box needs six numbers");
+  return { robot: $("limit-robot").value || null, clearance: number("limit-clearance"),
+    max_speed: number("limit-max-speed"), workspace, fixed_ends: $("limit-fixed-ends").value };
+}
+
 $("ask").addEventListener("click", () => guarded(async () => {
-  const body = { case: state.caseData, instruction: $("instruction").value, name: state.caseData.name };
+  const body = { case: state.caseData, instruction: $("instruction").value, name: state.caseData.name,
+    limits: limits() };
   follow(await post("/api/sessions", body));
 }));
 

@@ -78,15 +78,17 @@ def test_the_ground_robot_stays_on_the_floor_and_under_its_speed() -> None:
     assert np.abs(projection.trajectory[:, 2]).max() <= 1e-6
     assert projection.trajectory[:, 3].max() == 3.0
     names = {m.constraint: m for m in projection.moves}
-    assert names["speed limit"].waypoints == tuple(range(10, 20)) and names["speed limit"].largest_change == 2.0
+    assert (
+        names["speed limit"].waypoints == tuple(range(10, 20)) and names["speed limit"].largest_change == 2.0
+    )
     assert "z upper bound" in names
 
 
 def test_clearance_spares_the_objects_the_instruction_asks_to_approach() -> None:
     assert approached_objects("approach the cup, then avoid the box", ["cup", "box"]) == ("cup",)
-    assert approached_objects("slow down near the Red Box and keep away from the lamp", ["red box", "lamp"]) == (
-        "red box",
-    )
+    assert approached_objects(
+        "slow down near the Red Box and keep away from the lamp", ["red box", "lamp"]
+    ) == ("red box",)
     assert approached_objects("stay far from the cup", ["cup"]) == ()
     scene = Scene((SceneObject("cup", 0.0, 0.0, 0.6), SceneObject("box", 0.0, 0.4, 0.6)))
     limits = constraints_for(scene, Constraints(min_clearance=0.2), instruction="go closer to the cup")

@@ -17,10 +17,10 @@ from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from trajadapt.answer import parse_answer
 from trajadapt.case import load_case, load_scene
 from trajadapt.cli import cli
 from trajadapt.errors import AnswerParseError, InputError
-from trajadapt.plan import parse_answer
 from trajadapt.trajectory import MAX_FILE_BYTES, load_trajectory_file
 
 # Derandomized so that CI runs the same examples each time; set derandomize=False to explore further.

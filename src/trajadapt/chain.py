@@ -12,10 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any, Literal
 
+from trajadapt.answer import Plan
 from trajadapt.backends.base import Backend
 from trajadapt.case import Case
 from trajadapt.errors import SessionStateError
-from trajadapt.plan import Plan
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, ProgressCallback, SessionSettings
 from trajadapt.store import Store

@@ -10,6 +10,7 @@ from typing import Any
 
 import click
 
+from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import backend_class, get_backend, registered_backends
 from trajadapt.bench.report import write_report
@@ -35,7 +36,6 @@ from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError, TrajadaptError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
-from trajadapt.results import sibling_file, write_json_atomic
 from trajadapt.rosbag_io import is_bag, read_bag_trajectory
 from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.runner import Sandbox

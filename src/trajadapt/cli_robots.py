@@ -7,9 +7,9 @@ from pathlib import Path
 import click
 import numpy as np
 
+from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.case import load_scene
 from trajadapt.errors import InputError
-from trajadapt.results import sibling_file, write_json_atomic
 from trajadapt.sim.inputs import load_run_input
 
 ROBOT_NAMES = ("arm", "drone", "ground")

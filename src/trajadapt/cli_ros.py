@@ -8,8 +8,8 @@ from pathlib import Path
 
 import click
 
+from trajadapt.atomic_files import write_bytes_atomic, write_json_atomic
 from trajadapt.errors import InputError
-from trajadapt.results import write_bytes_atomic, write_json_atomic
 from trajadapt.rosbag_io import times_from_speeds, write_paths
 from trajadapt.trajectory import Trajectory, read_json_file
 

@@ -12,10 +12,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
+from trajadapt.answer import Plan, parse_answer
 from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
-from trajadapt.checks import ReviewNote, review_notes, validate_result
 from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
 from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
@@ -25,9 +25,9 @@ from trajadapt.errors import (
     InvalidTrajectory,
     SessionStateError,
 )
-from trajadapt.plan import Plan, parse_answer
 from trajadapt.projection import project
 from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
+from trajadapt.review import ReviewNote, review_notes, validate_result
 from trajadapt.robot_limits import robot_constraints
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult

@@ -17,7 +17,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from trajadapt.bench.checks import CHECKS
+from trajadapt.bench.judges import CHECKS
 from trajadapt.errors import InputError
 
 EXPECTATIONS_FILENAME = "expectations.toml"

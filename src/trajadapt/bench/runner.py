@@ -20,14 +20,14 @@ from typing import Any
 
 import numpy as np
 
+from trajadapt.atomic_files import write_json_atomic
 from trajadapt.backends.base import Backend
-from trajadapt.bench.checks import CheckContext, run_check
 from trajadapt.bench.expectations import EXPECTATIONS_FILENAME, ExpectationSet, find_expectations
+from trajadapt.bench.judges import CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, latte_scores, roughness
 from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
 from trajadapt.prompts import AXIS_CONVENTIONS
-from trajadapt.results import write_json_atomic
 from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 from trajadapt.skills.core import Axes

@@ -16,10 +16,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
+from trajadapt.answer import Plan
 from trajadapt.case import Case
 from trajadapt.chain import AdaptationChain
 from trajadapt.errors import SessionStateError, TrajadaptError
-from trajadapt.plan import Plan
 from trajadapt.session import AdaptationResult
 from trajadapt.skills.explain import explain_code
 from trajadapt.trajectory import Trajectory

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from trajadapt.bench.checks import CHECKS, CheckContext, run_check
+from trajadapt.bench.judges import CHECKS, CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, roughness
 from trajadapt.bench.runner import discover_cases, evaluate
 from trajadapt.case import load_case

@@ -147,7 +147,7 @@ def test_prepare_assembles_with_progress_then_loads(tmp_path: Path, monkeypatch:
 def test_prepare_bar_prints_lines_off_a_terminal(capsys: pytest.CaptureFixture[str]) -> None:
     import sys
 
-    from trajadapt.console import PrepareBar
+    from trajadapt.cli.console import PrepareBar
 
     bar = PrepareBar(sys.stderr)
     for done in range(0, 101, 5):

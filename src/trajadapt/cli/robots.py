@@ -82,7 +82,7 @@ def run_and_report(
     """
     image = image or sibling_file(source, f".{robot}.png")
     report_file = report_file or sibling_file(source, f".{robot}.sim.json")
-    from trajadapt.console import Progress
+    from trajadapt.cli.console import Progress
     from trajadapt.sim import SimulationOptions, simulate
 
     if offset is not None and scale is None:

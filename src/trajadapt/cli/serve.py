@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from trajadapt.cli_common import backend_option, isolation_of, limits_options, make_backend, option_option
+from trajadapt.cli.common import backend_option, isolation_of, limits_options, make_backend, option_option
 from trajadapt.constraints import Constraints
 from trajadapt.errors import DependencyNotInstalled, InputError
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES

@@ -11,7 +11,7 @@ import click
 
 from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import get_backend
-from trajadapt.console import PrepareBar
+from trajadapt.cli.console import PrepareBar
 from trajadapt.errors import InputError
 from trajadapt.robot_limits import ROBOT_LIMITS, ROBOT_NAMES, user_constraints
 from trajadapt.sandbox.runner import Isolation

@@ -1,10 +1,7 @@
-"""The ``trajadapt`` command line: thin click commands over the session, backends and log store."""
+"""``trajadapt adapt``: one case, reviewed in the terminal: plan, code, approve or correct, result."""
 
 from __future__ import annotations
 
-import json
-import logging
-from datetime import datetime
 from pathlib import Path
 from typing import Any
 
@@ -12,15 +9,10 @@ import click
 
 from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.backends.base import Backend
-from trajadapt.backends.registry import backend_class, get_backend, registered_backends
-from trajadapt.bench.report import write_report
-from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
-from trajadapt.bench.runner import rescore as rescore_results
 from trajadapt.case import Case, load_case, load_case_from_parts
 from trajadapt.chain import AdaptationChain
-from trajadapt.cli_common import (
+from trajadapt.cli.common import (
     backend_option,
-    backend_options,
     examples_option,
     grammar_option,
     isolation_of,
@@ -28,12 +20,10 @@ from trajadapt.cli_common import (
     make_backend,
     option_option,
 )
-from trajadapt.cli_robots import ROBOT_NAMES, plan, run_and_report, simulate
-from trajadapt.cli_ros import export
-from trajadapt.cli_serve import serve
-from trajadapt.console import CaseProgress, Progress, show_plan, show_result
+from trajadapt.cli.console import Progress, show_plan, show_result
+from trajadapt.cli.robots import ROBOT_NAMES, run_and_report
 from trajadapt.constraints import Constraints
-from trajadapt.errors import InputError, SessionStateError, TrajadaptError
+from trajadapt.errors import InputError, SessionStateError
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
 from trajadapt.rosbag_io import is_bag, read_bag_trajectory
@@ -45,33 +35,7 @@ from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
 
 
-class TrajadaptGroup(click.Group):
-    """Turns every TrajadaptError into one clear line and exit code 1 (tracebacks with --debug)."""
-
-    def invoke(self, ctx: click.Context) -> Any:
-        """Run the command, mapping our errors to click's."""
-        try:
-            return super().invoke(ctx)
-        except TrajadaptError as exc:
-            if ctx.params.get("debug"):
-                raise
-            raise click.ClickException(f"{type(exc).__name__}: {exc}") from exc
-
-
-@click.group(cls=TrajadaptGroup)
-@click.option("--debug", is_flag=True, help="Show tracebacks and debug logging.")
-@click.version_option(package_name="trajadapt")
-def cli(debug: bool) -> None:
-    """Adapt robot trajectories to natural-language instructions.
-
-    An LLM answers an instruction with a numbered plan and Python code; you approve the plan or
-    give feedback; the approved code runs in a sandbox on the trajectory; the result is written
-    as JSON and plotted against the original.
-    """
-    logging.basicConfig(level=logging.DEBUG if debug else logging.WARNING)
-
-
-@cli.command()
+@click.command()
 @click.argument("case_file", required=False, type=click.Path(path_type=Path))
 @click.option("--instruction", "-i", default=None, help="Instruction (replaces the case's own).")
 @click.option(
@@ -342,197 +306,3 @@ def _save(
                    "the result file is complete", err=True)  # fmt: skip
         return
     click.echo(f"Plot written to {plot_file}")
-
-
-@cli.command()
-@click.argument("cases", nargs=-1, required=True, type=click.Path(path_type=Path))
-@backend_option
-@option_option
-@click.option(
-    "--mode",
-    type=click.Choice(PROMPT_MODES),
-    default=None,
-    help="skills (default): the prompt lists the skill library; paper: only get_trajectory/detect_objects.",
-)
-@examples_option
-@grammar_option
-@click.option(
-    "--out",
-    "out_dir",
-    type=click.Path(path_type=Path),
-    default=None,
-    help="Output folder (default: bench-out/<mode>).",
-)
-@click.option(
-    "--jobs",
-    "-j",
-    type=click.IntRange(1, 64),
-    default=1,
-    show_default=True,
-    help="Cases in flight at once: requests side by side to a served model (vLLM, Ollama), or that many "
-    "model processes with the local backend (one thread each on 2 cores; results equal a serial run).",
-)
-@click.option("--force", is_flag=True, help="Run cases again even if they have a result.")
-@click.option(
-    "--rescore", is_flag=True, help="Only judge the stored results again (after the checks changed)."
-)
-@click.option(
-    "--expectations",
-    type=click.Path(path_type=Path),
-    default=None,
-    help="Expectations TOML (default: CASES/expectations.toml or the packaged file).",
-)
-@click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
-@click.option("--repairs", type=click.IntRange(0, 10), default=None, help="Repair rounds (default 2).")
-@click.option(
-    "--waypoints-in-prompt/--summary-in-prompt",
-    default=None,
-    help="Send every waypoint to the LLM, or only the trajectory's summary (default; see the README).",
-)
-@click.option(
-    "--project/--no-project",
-    "project_onto",
-    default=None,
-    help="Project results that break a case's constraints onto them (default), or fail them.",
-)
-def bench(
-    cases: tuple[Path, ...],
-    backend: str | None,
-    options: tuple[tuple[str, str], ...],
-    mode: str | None,
-    examples: int | None,
-    grammar: bool | None,
-    out_dir: Path | None,
-    jobs: int,
-    force: bool,
-    rescore: bool,
-    expectations: Path | None,
-    axes: str | None,
-    repairs: int | None,
-    waypoints_in_prompt: bool | None,
-    project_onto: bool | None,
-) -> None:
-    """Run every case in CASES (files or folders) and score the results against expectations.
-
-    Writes one result file per case, summary.json, report.md and a figure per failed case into the
-    output folder. Cases that already have a result are skipped unless --force.
-    """
-    settings = load_settings(
-        {
-            "backend": backend,
-            "axes": axes,
-            "repair_attempts": repairs,
-            "waypoints_in_prompt": waypoints_in_prompt,
-            "project": project_onto,
-            "mode": mode,
-            "examples": examples,
-            "grammar": grammar,
-        }
-    )
-    found = discover_cases(list(cases), expectations)
-    config = BenchConfig(
-        out_dir or Path("bench-out") / settings.mode,
-        SessionSettings.from_settings(settings),
-        jobs=jobs,
-        force=force,
-        isolation=isolation_of(settings),
-    )
-    if rescore:
-        click.echo(f"judged {rescore_results(found, config)} stored result(s) again")
-        stored = [result_path(config, case) for case in found]
-        _report(config, [json.loads(path.read_text()) for path in stored if path.is_file()])
-        return
-    chosen = make_backend(settings, options)
-    todo = sum(1 for case in found if force or not result_path(config, case).is_file())
-    click.echo(
-        f"{len(found)} case(s), {todo} to run with {chosen.describe()}, mode {settings.mode}, "
-        f"{settings.examples} example(s), grammar {'on' if settings.grammar else 'off'} -> {config.out_dir}"
-    )
-    try:
-        with CaseProgress(todo) as progress:
-            records = run_benchmark(
-                found, chosen, config, lambda case, record: progress.advance(case.key, _outcome(record))
-            )
-    finally:
-        chosen.close()
-    _report(config, records)
-
-
-def _report(config: BenchConfig, records: list[dict[str, Any]]) -> None:
-    summary = write_report(config.out_dir, records)
-    overall = summary["overall"]
-    rate = "-" if overall["pass_rate"] is None else f"{100 * overall['pass_rate']:.1f}%"
-    report = config.out_dir / "report.md"
-    click.echo(f"passed {overall['passed']} of {overall['judged']} judged cases ({rate}); report: {report}")
-
-
-def _outcome(record: dict[str, Any]) -> str:
-    evaluation = record["evaluation"]
-    if record["status"] != "ok":
-        return "error: " + str(record["error"])[:80]
-    if not evaluation["judged"]:
-        return "not judged"
-    return "pass" if evaluation["passed"] else "fail: " + str(evaluation["reason"])[:80]
-
-
-@cli.command()
-@click.option("--check", is_flag=True, help="Also send each configured backend a tiny request.")
-@backend_option
-@option_option
-def backends(check: bool, backend: str | None, options: tuple[tuple[str, str], ...]) -> None:
-    """List the registered backends (built-in and plugins); with --check, try them."""
-    settings = load_settings({"backend": backend})
-    names = [backend] if backend else sorted(registered_backends())
-    for name in names:
-        marker = "*" if name == settings.backend else " "
-        try:
-            doc = (backend_class(name).__doc__ or "").strip().splitlines()[0]
-        except TrajadaptError as exc:
-            click.echo(f"{marker} {name:10s} unavailable: {exc}")
-            continue
-        click.echo(f"{marker} {name:10s} {doc}")
-        if check:
-            click.echo("    " + _check_backend(name, backend_options(options) if backend else {}))
-
-
-def _check_backend(name: str, options: dict[str, str]) -> str:
-    from trajadapt.backends.conformance import probe_backend
-
-    try:
-        return probe_backend(get_backend(name, options))
-    except TrajadaptError as exc:
-        return f"FAILED: {type(exc).__name__}: {exc}"
-
-
-@cli.command()
-@click.option("--limit", "-n", default=20, show_default=True, help="How many exchanges to show.")
-@click.option("--session", "session_id", default=None, help="Show one session (id or prefix).")
-@click.option("--json", "as_json", is_flag=True, help="Print the records as JSON lines.")
-def logs(limit: int, session_id: str | None, as_json: bool) -> None:
-    """Show logged exchanges (prompts, answers, plans, code, results) from the SQLite log."""
-    settings = load_settings()
-    if not settings.log_path.exists():
-        click.echo(f"No log yet at {settings.log_path}")
-        return
-    store = Store(settings.log_path)
-    try:
-        records = store.recent_exchanges(limit, session_id)
-    finally:
-        store.close()
-    for record in records:
-        if as_json:
-            click.echo(json.dumps(record.__dict__))
-            continue
-        when = datetime.fromtimestamp(record.created).strftime("%Y-%m-%d %H:%M:%S")
-        status = f"ERROR {record.error}" if record.error else "ok"
-        click.secho(f"#{record.id} {when} session {record.session_id} {record.kind} "
-                    f"[{record.backend}/{record.model}] {status}", bold=True)  # fmt: skip
-        click.echo(f"  instruction: {record.instruction}")
-        if record.plan:
-            click.echo("  plan: " + record.plan.replace("\n", "\n        "))
-
-
-cli.add_command(simulate)
-cli.add_command(plan)
-cli.add_command(serve)
-cli.add_command(export)

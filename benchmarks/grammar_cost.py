@@ -18,7 +18,8 @@ from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import ChatRequest
 from trajadapt.backends.local import LocalBackend, LocalOptions
 from trajadapt.case import Case, load_case
-from trajadapt.prompts import AXIS_CONVENTIONS, first_messages
+from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.prompts import first_messages
 
 
 def cases_under(paths: list[Path], limit: int) -> list[Case]:

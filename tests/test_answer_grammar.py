@@ -10,7 +10,8 @@ import pytest
 
 from trajadapt.answer_grammar import answer_grammar, is_statement_skill, parameter_kind, skill_parameters
 from trajadapt.gbnf import Grammar, Lit, Ref, Some, alt, seq
-from trajadapt.prompts import AXIS_CONVENTIONS, system_prompt
+from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.prompts import system_prompt
 from trajadapt.skills import SKILLS
 
 SCENE = ("box", "person", "lamp", "chair", "table", "St Bernard")

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from trajadapt.effect import contradictions, measure_effect
+from trajadapt.geometry import Axes
 from trajadapt.scene import SceneObject
 from trajadapt.skills import bind_skills
-from trajadapt.skills.core import Axes
 from trajadapt.trajectory import Trajectory
 
 SKILLS = bind_skills()

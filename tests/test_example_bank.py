@@ -10,7 +10,8 @@ import pytest
 
 from trajadapt.answer_grammar import answer_grammar, is_statement_skill
 from trajadapt.example_bank import Example, ExampleBank, default_bank, read_examples, terms
-from trajadapt.prompts import AXIS_CONVENTIONS, first_messages
+from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.prompts import first_messages
 from trajadapt.skills import SKILLS
 
 

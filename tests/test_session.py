@@ -182,7 +182,7 @@ def test_paper_mode_has_no_skills_and_needs_the_result_variable(simple_case: Cas
 
 
 def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandbox) -> None:
-    from trajadapt.prompts import AXIS_CONVENTIONS
+    from trajadapt.geometry import AXIS_CONVENTIONS
 
     code = "modified_trajectory = shift(get_trajectory(), 'left', 0.3)\n"
     session, backend = make_session(

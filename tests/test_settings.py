@@ -52,7 +52,8 @@ def test_an_unknown_choice_in_the_environment_is_a_clear_error(
 
 
 def test_the_choices_match_what_the_code_knows() -> None:
-    from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+    from trajadapt.geometry import AXIS_CONVENTIONS
+    from trajadapt.prompts import PROMPT_MODES
     from trajadapt.robot_limits import ROBOT_NAMES
     from trajadapt.settings import CHOICES
 

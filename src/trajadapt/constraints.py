@@ -18,8 +18,8 @@ from typing import TypeVar
 
 import numpy as np
 
+from trajadapt.geometry import Array
 from trajadapt.scene import Scene, name_key
-from trajadapt.skills.core import Array
 
 _T = TypeVar("_T")
 

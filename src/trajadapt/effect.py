@@ -19,8 +19,8 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.constraints import ConstraintMove
+from trajadapt.geometry import DIRECTION_SYNONYMS, DIRECTIONS, Axes, extent, progress
 from trajadapt.scene import SceneObject
-from trajadapt.skills.core import DIRECTION_SYNONYMS, DIRECTIONS, Axes, extent, progress
 from trajadapt.trajectory import Trajectory
 
 Array = npt.NDArray[np.float64]

@@ -16,7 +16,7 @@ from matplotlib.figure import Figure  # noqa: E402
 from mpl_toolkits.mplot3d import Axes3D  # noqa: E402
 
 from trajadapt.atomic_files import write_bytes_atomic  # noqa: E402
-from trajadapt.prompts import AxisConvention  # noqa: E402
+from trajadapt.geometry import AxisConvention  # noqa: E402
 from trajadapt.scene import Scene  # noqa: E402
 from trajadapt.trajectory import Trajectory  # noqa: E402
 

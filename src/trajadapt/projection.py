@@ -25,8 +25,8 @@ import numpy as np
 
 from trajadapt.constraints import ConstraintMove, Constraints, Violation, find_violations, new_violations
 from trajadapt.errors import DependencyNotInstalled
+from trajadapt.geometry import Array
 from trajadapt.scene import Scene
-from trajadapt.skills.core import Array
 from trajadapt.skills.objects import avoid, sideways_from
 
 SMOOTHING_WEIGHT = 4.0

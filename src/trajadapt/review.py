@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from trajadapt.errors import InvalidTrajectory
-from trajadapt.skills.core import extent
+from trajadapt.geometry import extent
 from trajadapt.trajectory import MAX_MAGNITUDE, Trajectory
 
 JUMP_FACTOR = 3.0

@@ -25,15 +25,15 @@ from trajadapt.errors import (
     InvalidTrajectory,
     SessionStateError,
 )
+from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
 from trajadapt.projection import project
-from trajadapt.prompts import AXIS_CONVENTIONS, AxisConvention, first_messages, render
+from trajadapt.prompts import first_messages, render
 from trajadapt.review import ReviewNote, review_notes, validate_result
 from trajadapt.robot_limits import robot_constraints
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
-from trajadapt.skills.core import Axes
 from trajadapt.skills.explain import explain_code
 from trajadapt.store import Store
 from trajadapt.trajectory import Trajectory
@@ -547,7 +547,7 @@ class AdaptationSession:
         """The measured effect of the result and what it contradicts in the user's words."""
         if trajectory is None:
             return {}
-        axes = Axes.from_positive_x(self.settings.axes.positive_x)
+        axes = self.settings.axes.frame
         effect = measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes)
         effect = replace(effect, constraint_moves=self._last_moves)
         return {

@@ -13,8 +13,8 @@ from trajadapt.bench.judges import CHECKS, CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, roughness
 from trajadapt.bench.runner import discover_cases, evaluate
 from trajadapt.case import load_case
+from trajadapt.geometry import Axes
 from trajadapt.skills import events, objects, shape, speed
-from trajadapt.skills.core import Axes
 
 N = 60
 S = np.linspace(0.0, 1.0, N)

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from trajadapt.geometry import Axes
 from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
-from trajadapt.skills.core import AMOUNT_WORDS, Axes, as_point, resolve_amount
+from trajadapt.skills.core import AMOUNT_WORDS, as_point, resolve_amount
 from trajadapt.skills.objects import CLOSER_FRACTIONS
 
 N = 100

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.skills.core import Array
+from trajadapt.geometry import Array
 
 
 def _pairwise(a: Array, b: Array, columns: int = 3) -> Array:

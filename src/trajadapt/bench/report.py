@@ -12,8 +12,8 @@ from typing import Any
 import numpy as np
 
 from trajadapt.atomic_files import write_bytes_atomic, write_json_atomic
+from trajadapt.geometry import AXIS_CONVENTIONS
 from trajadapt.plot import plot_comparison
-from trajadapt.prompts import AXIS_CONVENTIONS
 from trajadapt.scene import Scene, parse_objects
 from trajadapt.trajectory import Trajectory
 

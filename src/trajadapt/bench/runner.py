@@ -27,10 +27,9 @@ from trajadapt.bench.judges import CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, latte_scores, roughness
 from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
-from trajadapt.prompts import AXIS_CONVENTIONS
+from trajadapt.geometry import AXIS_CONVENTIONS, Axes
 from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
-from trajadapt.skills.core import Axes
 from trajadapt.trajectory import Trajectory, read_json_file
 
 
@@ -221,9 +220,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         {key: record["settings"][key] for key in ("mode", "waypoints_in_prompt", "project", "axes")}
     )
     record["repair_rounds"] = sum(1 for turn in session.turns if turn.kind == "repair")
-    record["evaluation"] = evaluate(
-        case, loaded, record, Axes.from_positive_x(config.session.axes.positive_x)
-    )
+    record["evaluation"] = evaluate(case, loaded, record, config.session.axes.frame)
     record["metrics"] = shape_metrics(loaded, record)
     record["target_scores"] = target_scores(case.path, loaded, record)
     return record
@@ -284,7 +281,7 @@ def rescore(cases: list[BenchCase], config: BenchConfig) -> int:
             continue
         record = json.loads(path.read_text())
         loaded = load_case(case.path)
-        axes = Axes.from_positive_x(AXIS_CONVENTIONS[record.get("axes", config.session.axes.name)].positive_x)
+        axes = AXIS_CONVENTIONS[record.get("axes", config.session.axes.name)].frame
         record["evaluation"] = evaluate(case, loaded, record, axes)
         record["metrics"] = shape_metrics(loaded, record)
         record["target_scores"] = target_scores(case.path, loaded, record)

@@ -24,8 +24,9 @@ from trajadapt.cli.console import Progress, show_plan, show_result
 from trajadapt.cli.robots import ROBOT_NAMES, run_and_report
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError
+from trajadapt.geometry import AXIS_CONVENTIONS
 from trajadapt.plot import plot_comparison
-from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+from trajadapt.prompts import PROMPT_MODES
 from trajadapt.rosbag_io import is_bag, read_bag_trajectory
 from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.runner import Sandbox

@@ -20,7 +20,8 @@ from trajadapt.cli.common import (
     option_option,
 )
 from trajadapt.cli.console import CaseProgress
-from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.prompts import PROMPT_MODES
 from trajadapt.session import SessionSettings
 from trajadapt.settings import load_settings
 

@@ -10,6 +10,7 @@ import numpy as np
 from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.case import load_scene
 from trajadapt.errors import InputError
+from trajadapt.geometry import AXIS_CONVENTIONS
 from trajadapt.sim.inputs import load_run_input
 
 ROBOT_NAMES = ("arm", "drone", "ground")
@@ -88,7 +89,7 @@ def run_and_report(
     if offset is not None and scale is None:
         raise InputError("--offset needs --scale (without both, the map is fitted to the workspace)")
     run = load_run_input(source)
-    positive_x = "left" if axes == "paper" else "right"
+    positive_x = AXIS_CONVENTIONS[axes].positive_x
     options = SimulationOptions(
         gui=gui, scale=scale, offset=offset, image=image, animation=gif, realtime=gui, positive_x=positive_x
     )

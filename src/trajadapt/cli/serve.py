@@ -13,7 +13,8 @@ import click
 from trajadapt.cli.common import backend_option, isolation_of, limits_options, make_backend, option_option
 from trajadapt.constraints import Constraints
 from trajadapt.errors import DependencyNotInstalled, InputError
-from trajadapt.prompts import AXIS_CONVENTIONS, PROMPT_MODES
+from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.prompts import PROMPT_MODES
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
 from trajadapt.settings import Settings, load_settings

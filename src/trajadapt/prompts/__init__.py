@@ -7,7 +7,6 @@ reuse its cached state; what changes (environment, trajectory, instruction) foll
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from importlib import resources
 from string import Template
 
@@ -16,41 +15,12 @@ import numpy as np
 from trajadapt.backends.base import ChatMessage
 from trajadapt.case import Case
 from trajadapt.example_bank import default_bank
+from trajadapt.geometry import AxisConvention
 from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
 from trajadapt.skills import describe_skills
 from trajadapt.trajectory import Trajectory
 
 PROMPT_MODES = ("skills", "paper")
-
-
-@dataclass(frozen=True)
-class AxisConvention:
-    """What the positive direction of each axis means to the user."""
-
-    name: str
-    positive_x: str
-    negative_x: str
-    positive_y: str = "front"
-    negative_y: str = "back"
-    positive_z: str = "up"
-    negative_z: str = "down"
-
-    def describe(self) -> str:
-        """The COORDINATE SYSTEM section's lines."""
-        return "\n".join(
-            f"The positive {axis} axis is {positive}; the negative {axis} axis is {negative}."
-            for axis, positive, negative in (
-                ("X", self.positive_x, self.negative_x),
-                ("Y", self.positive_y, self.negative_y),
-                ("Z", self.positive_z, self.negative_z),
-            )
-        )
-
-
-AXIS_CONVENTIONS = {
-    "paper": AxisConvention("paper", positive_x="left", negative_x="right"),
-    "ovita": AxisConvention("ovita", positive_x="right", negative_x="left"),
-}
 
 
 def load_template(name: str) -> Template:

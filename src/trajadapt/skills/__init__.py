@@ -12,8 +12,8 @@ import inspect
 from collections.abc import Callable
 from typing import Any
 
+from trajadapt.geometry import PAPER_AXES, Axes
 from trajadapt.skills import events, objects, shape, speed
-from trajadapt.skills.core import PAPER_AXES, Axes
 
 SKILLS: tuple[Callable[..., Any], ...] = (
     shape.shift,

@@ -11,9 +11,8 @@ from dataclasses import dataclass
 from typing import Annotated, Any
 
 import numpy as np
-import numpy.typing as npt
 
-Array = npt.NDArray[np.float64]
+from trajadapt.geometry import PART_WORDS, Array, extent, progress
 
 
 @dataclass(frozen=True)
@@ -51,67 +50,6 @@ AMOUNT_WORDS = {
 }  # fmt: skip
 
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?")
-
-DIRECTION_SYNONYMS = {
-    "left": "left", "right": "right", "front": "front", "forward": "front", "forwards": "front",
-    "ahead": "front", "back": "back", "backward": "back", "backwards": "back", "behind": "back",
-    "rear": "back", "up": "up", "upward": "up", "upwards": "up", "higher": "up", "top": "up",
-    "above": "up", "upper": "up", "down": "down", "downward": "down", "downwards": "down",
-    "lower": "down", "bottom": "down", "below": "down",
-}  # fmt: skip
-
-
-@dataclass(frozen=True)
-class Axes:
-    """Unit vectors of the six named directions in the trajectory's frame."""
-
-    left: tuple[float, float, float] = (1.0, 0.0, 0.0)
-    front: tuple[float, float, float] = (0.0, 1.0, 0.0)
-    up: tuple[float, float, float] = (0.0, 0.0, 1.0)
-
-    @classmethod
-    def from_positive_x(cls, positive_x: str) -> Axes:
-        """The paper's frame when +X is left, OVITA's when +X is right (front +Y, up +Z in both)."""
-        return cls(left=(1.0, 0.0, 0.0) if positive_x == "left" else (-1.0, 0.0, 0.0))
-
-    def vector(self, direction: str) -> Array:
-        """The unit vector of a direction word ('left', 'upwards', 'back', ...).
-
-        Raises:
-            ValueError: an unknown word, listing the known ones.
-        """
-        word = DIRECTION_SYNONYMS.get(str(direction).strip().lower())
-        if word is None:
-            raise ValueError(_direction_advice(direction))
-        sign = -1.0 if word in ("right", "back", "down") else 1.0
-        base = {"left": self.left, "right": self.left, "front": self.front, "back": self.front}
-        return sign * np.asarray(base.get(word, self.up), dtype=np.float64)
-
-
-PAPER_AXES = Axes()
-
-DIRECTIONS = ("left", "right", "front", "back", "up", "down")
-"""The canonical direction words (DIRECTION_SYNONYMS maps every other word onto one of them)."""
-
-RELATIVE_WORDS = ("away", "further", "farther", "closer", "towards", "toward", "near", "nearer")
-
-
-def _direction_advice(direction: Any) -> str:
-    """Why a direction word was refused, and which function to use instead."""
-    word = str(direction).strip().lower()
-    known = ", ".join(sorted(set(DIRECTION_SYNONYMS.values())))
-    if word in RELATIVE_WORDS:
-        return (
-            f"{direction!r} is not a direction but relative to an object: use "
-            "move_away(t, detect_objects('name'), amount) or move_closer(t, detect_objects('name'), amount)"
-        )
-    if word in PART_WORDS or word in ("goal", "start"):
-        return (
-            f"{direction!r} names a part of the path, not a direction: use shift_goal(t, direction, amount), "
-            f"shift_start(t, direction, amount) or shift_part(t, direction, amount, part='{word}'); "
-            f"directions are: {known}"
-        )
-    return f"unknown direction {direction!r}; use one of: {known}"
 
 
 def as_trajectory(trajectory: Any) -> Array:
@@ -156,11 +94,6 @@ def as_point(point: Any, name: str = "point") -> Array:
     return array[:3].copy()
 
 
-def extent(trajectory: Array) -> float:
-    """The largest side of the bounding box of the positions (at least a tiny positive number)."""
-    return float(max(np.ptp(trajectory[:, :3], axis=0).max(), 1e-9))
-
-
 def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> float:
     """A distance from a number or a vague word ('a bit', 'a lot'), relative to the trajectory's size.
 
@@ -181,15 +114,6 @@ def resolve_amount(amount: Any, trajectory: Array, default_word: str = "") -> fl
             raise ValueError(f"unknown amount {amount!r}; give a number or one of: {words}")
         return AMOUNT_WORDS[key] * extent(trajectory)
     return float(amount)
-
-
-def progress(trajectory: Array) -> Array:
-    """Arc-length position of each waypoint along the path, from 0 at the start to 1 at the goal."""
-    steps = np.linalg.norm(np.diff(trajectory[:, :3], axis=0), axis=1)
-    total = steps.sum()
-    if total <= 0:
-        return np.linspace(0.0, 1.0, len(trajectory))
-    return np.concatenate([[0.0], np.cumsum(steps) / total])
 
 
 def smoothstep(x: Array) -> Array:
@@ -216,13 +140,6 @@ def within(trajectory: Array, point: Array, radius: float, blend: float | None =
     distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
     width = blend if blend is not None else 0.5 * radius
     return 1.0 - smoothstep((distance - radius) / max(width, 1e-12))
-
-
-PART_WORDS = {
-    "all": (0.0, 1.0), "whole": (0.0, 1.0), "start": (0.0, 0.3), "beginning": (0.0, 0.3),
-    "first half": (0.0, 0.5), "middle": (0.3, 0.7), "center": (0.3, 0.7), "second half": (0.5, 1.0),
-    "end": (0.7, 1.0), "goal": (0.7, 1.0), "final": (0.7, 1.0),
-}  # fmt: skip
 
 
 def part_mask(trajectory: Array, part: Any, blend: float = 0.1) -> Array:

@@ -6,10 +6,8 @@ from typing import Any
 
 import numpy as np
 
+from trajadapt.geometry import PAPER_AXES, Array, Axes, extent
 from trajadapt.skills.core import (
-    PAPER_AXES,
-    Array,
-    Axes,
     DirectionArg,
     DistanceArg,
     PointArg,
@@ -17,7 +15,6 @@ from trajadapt.skills.core import (
     WaypointArg,
     as_point,
     as_trajectory,
-    extent,
     nearest_index,
     resolve_amount,
 )

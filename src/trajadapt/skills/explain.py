@@ -14,8 +14,9 @@ from collections.abc import Callable
 from typing import Any
 
 from trajadapt.code_parse import parse_code
+from trajadapt.geometry import PART_WORDS
 from trajadapt.skills import SKILLS
-from trajadapt.skills.core import AMOUNT_WORDS, PART_WORDS
+from trajadapt.skills.core import AMOUNT_WORDS
 from trajadapt.skills.objects import CLOSER_FRACTIONS
 
 TEMPLATES: dict[str, str] = {

@@ -10,8 +10,8 @@ from typing import Any
 
 import numpy as np
 
+from trajadapt.geometry import Array, extent, progress
 from trajadapt.skills.core import (
-    Array,
     DistanceArg,
     FractionArg,
     PointArg,
@@ -19,9 +19,7 @@ from trajadapt.skills.core import (
     TrajectoryArg,
     as_point,
     as_trajectory,
-    extent,
     nearest_index,
-    progress,
     proximity,
     resolve_amount,
     smoothstep,

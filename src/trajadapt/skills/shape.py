@@ -9,10 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from trajadapt.geometry import PAPER_AXES, Array, Axes, extent, progress
 from trajadapt.skills.core import (
-    PAPER_AXES,
-    Array,
-    Axes,
     DirectionArg,
     DistanceArg,
     HeightArg,
@@ -22,9 +20,7 @@ from trajadapt.skills.core import (
     as_point,
     as_trajectory,
     bump,
-    extent,
     part_mask,
-    progress,
     resolve_amount,
     smoothstep,
 )

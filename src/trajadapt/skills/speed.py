@@ -10,17 +10,15 @@ from typing import Any
 
 import numpy as np
 
+from trajadapt.geometry import Array, extent, progress
 from trajadapt.skills.core import (
-    Array,
     PartArg,
     PointArg,
     ProfileArg,
     TrajectoryArg,
     as_point,
     as_trajectory,
-    extent,
     part_mask,
-    progress,
     proximity,
     within,
 )

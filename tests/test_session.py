@@ -283,3 +283,25 @@ def test_no_second_look_by_default(simple_case: Case, sandbox: Sandbox) -> None:
     session, backend = make_session(simple_case, sandbox, answer("1) Shift.", right))
     session.draft()
     assert session.approve().contradictions and len(backend.requests) == 1
+
+
+def test_a_failure_is_typed_and_the_report_reads_its_kind_not_its_words(
+    simple_case: Case, sandbox: Sandbox
+) -> None:
+    from trajadapt.bench.report import failure_kind
+
+    broken = json.dumps(
+        {"high_level_plan": "1) Shift.", "python_code": "modified_trajectory = shift(1, 2, 3, 4, 5)"}
+    )
+    session = AdaptationSession(
+        simple_case, ScriptedBackend(answers=[broken]), sandbox, SessionSettings(repair_attempts=0)
+    )
+    session.draft()
+    result = session.approve()
+    assert result.failure is not None and result.failure.kind == "TypeError"
+    assert result.error == result.failure.message and result.error.startswith("TypeError")
+    record = result.to_dict()
+    assert record["error_kind"] == "TypeError"
+    record["error"] = "something else entirely"  # the kind, not the words, names the failure
+    assert failure_kind(record) == "error: TypeError"
+    assert failure_kind({"status": "error", "error": "ValueError: old file"}) == "error: ValueError"

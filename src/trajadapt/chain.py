@@ -17,7 +17,7 @@ from trajadapt.backends.base import Backend
 from trajadapt.case import Case
 from trajadapt.errors import SessionStateError
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.session import AdaptationResult, AdaptationSession, ProgressCallback, SessionSettings
+from trajadapt.session import AdaptationResult, AdaptationSession, Outcome, ProgressCallback, SessionSettings
 from trajadapt.store import Store
 
 Target = Literal["current", "original"]
@@ -75,7 +75,7 @@ class AdaptationChain:
         """The log's session id of every step."""
         return [step.session_id for step in self.steps if step.session_id]
 
-    def preview(self) -> Any:
+    def preview(self) -> Outcome:
         """The current plan's code run once on this step's input, without repair (see AdaptationSession)."""
         return self.session.preview()
 

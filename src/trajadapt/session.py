@@ -151,6 +151,30 @@ class Timings:
 
 
 @dataclass(frozen=True)
+class Failure:
+    """Why code gave no trajectory, typed: what kind of failure, and the line people read.
+
+    ``kind`` is an exception type (TypeError, ...) or one of ConstraintViolation, InvalidTrajectory,
+    NoResult, RepairUnreadable and a backend error's type; ``message`` is the whole line shown to
+    people and sent back for repair.
+    """
+
+    kind: str
+    message: str
+
+    @classmethod
+    def of(cls, kind: str, detail: str) -> Failure:
+        """A failure whose message is 'kind: detail'."""
+        return cls(kind, f"{kind}: {detail}")
+
+    def __str__(self) -> str:
+        return self.message
+
+
+Outcome = Trajectory | Failure
+
+
+@dataclass(frozen=True)
 class AdaptationResult:
     """The outcome of an approved plan: the new trajectory, or why there is none."""
 
@@ -158,7 +182,7 @@ class AdaptationResult:
     status: Literal["ok", "error"]
     plan: Plan | None
     trajectory: Trajectory | None
-    error: str | None
+    failure: Failure | None
     attempts: int
     backend: str
     model: str
@@ -176,6 +200,11 @@ class AdaptationResult:
         """True when the code ran and produced a valid trajectory."""
         return self.status == "ok"
 
+    @property
+    def error(self) -> str | None:
+        """Why there is no trajectory, in one line (None when there is one)."""
+        return self.failure.message if self.failure else None
+
     def to_dict(self) -> dict[str, Any]:
         """The result file's content."""
         return {
@@ -189,6 +218,7 @@ class AdaptationResult:
             "objects": [obj.to_dict() for obj in self.case.scene.objects],
             "status": self.status,
             "error": self.error,
+            "error_kind": self.failure.kind if self.failure else None,
             "attempts": self.attempts,
             "backend": self.backend,
             "model": self.model,
@@ -315,16 +345,21 @@ class AdaptationSession:
             if attempts > self.settings.repair_attempts:
                 return self._result(plan, outcome, attempts)
             self.on_progress(f"the code failed, asking for a repair: {outcome}")
-            problem = outcome + skill_hints(plan.code, outcome) if self.settings.mode == "skills" else outcome
+            problem = outcome.message
+            if self.settings.mode == "skills":
+                problem += skill_hints(plan.code, outcome.message)
             self.messages.append(ChatMessage("user", render(
                 "repair", problem=problem, instruction=self.case.instruction
             )))  # fmt: skip
             try:
-                plan = self._ask("repair", outcome)
+                plan = self._ask("repair", outcome.message)
             except AnswerParseError as exc:
-                return self._result(plan, f"repair answer unreadable: {exc}", attempts)
+                return self._result(
+                    plan, Failure("RepairUnreadable", f"repair answer unreadable: {exc}"), attempts
+                )
             except BackendError as exc:  # keep what failed; the repair itself could not be asked
-                return self._result(plan, f"{outcome} (no repair: {type(exc).__name__}: {exc})", attempts)
+                unasked = Failure(outcome.kind, f"{outcome} (no repair: {type(exc).__name__}: {exc})")
+                return self._result(plan, unasked, attempts)
 
     def _second_look(self, plan: Plan, trajectory: Trajectory) -> tuple[Plan, Trajectory]:
         """With ``repair_contradictions``: one more answer when the result contradicts the instruction.
@@ -379,7 +414,7 @@ class AdaptationSession:
         """Every plan of the conversation so far, oldest first (index = version)."""
         return [plan for _, _, plan in self._checkpoints]
 
-    def preview(self) -> Trajectory | str:
+    def preview(self) -> Outcome:
         """Run the current plan's code once, without repair: the proposed trajectory, or what went wrong."""
         return self._execute(self._require_plan())
 
@@ -458,33 +493,36 @@ class AdaptationSession:
             return None
         return answer_grammar(tuple(obj.name for obj in self.case.scene.objects)).to_gbnf()
 
-    def _execute(self, plan: Plan) -> Trajectory | str:
+    def _execute(self, plan: Plan) -> Outcome:
         skills = self.settings.mode == "skills"
         options = ExecutionOptions(
             skills=skills, positive_x=self.settings.axes.positive_x, accept_last=skills
         )
         result: SandboxResult = self.sandbox.run(plan.code, self.case.trajectory, self.case.scene, options)
         self._exec_s += result.duration_s
-        outcome: Trajectory | str
+        outcome: Outcome
         self._last_notes, self._last_moves = result.notes, ()
-        if result.error is not None or result.rows is None:
-            outcome = result.error.describe() if result.error else "the code produced no trajectory"
+        if result.error is not None:
+            outcome = Failure(result.error.type, result.error.describe())
+        elif result.rows is None:
+            outcome = Failure("NoResult", "the code produced no trajectory")
         else:
             try:
                 outcome = self._enforce_constraints(validate_result(result.rows))
             except InvalidTrajectory as exc:
-                outcome = f"InvalidTrajectory: {exc}"
+                outcome = Failure.of("InvalidTrajectory", str(exc))
+        problem = None if isinstance(outcome, Trajectory) else outcome.message
         self._log("execution", plan.code, {
             "ok": isinstance(outcome, Trajectory),
             "stdout": result.stdout,
             "layers": list(result.layers),
             "waypoints": len(outcome) if isinstance(outcome, Trajectory) else None,
             "trajectory": outcome.to_rows() if isinstance(outcome, Trajectory) else None,
-        }, None if isinstance(outcome, Trajectory) else outcome, {"exec": result.duration_s})  # fmt: skip
+        }, problem, {"exec": result.duration_s})  # fmt: skip
         self._last_stdout = result.stdout
         return outcome
 
-    def _enforce_constraints(self, trajectory: Trajectory) -> Trajectory | str:
+    def _enforce_constraints(self, trajectory: Trajectory) -> Outcome:
         """The trajectory if it keeps the constraints (projected onto them if asked), else the problem."""
         if not self.settings.check_constraints:
             return trajectory
@@ -498,20 +536,20 @@ class AdaptationSession:
             try:
                 projection = project(trajectory.array, original, self.case.scene, limits)
             except DependencyNotInstalled as exc:
-                return f"ConstraintViolation: {broken} ({exc})"
+                return Failure.of("ConstraintViolation", f"{broken} ({exc})")
             self._last_notes += (f"{projection.describe()} (the code's result broke: {broken})",)
             self._last_moves = projection.moves
             trajectory = validate_result(projection.trajectory)
             violations = new_violations(trajectory.array, original, self.case.scene, limits)
         if violations:
-            return "ConstraintViolation: " + "; ".join(v.message for v in violations)
+            return Failure.of("ConstraintViolation", "; ".join(v.message for v in violations))
         return trajectory
 
-    def failure(self, error: str) -> AdaptationResult:
+    def failure(self, failure: Failure) -> AdaptationResult:
         """The result of a session that ended without running code (e.g. the LLM gave no readable plan)."""
-        return self._result(self.plan, error, 0)
+        return self._result(self.plan, failure, 0)
 
-    def _result(self, plan: Plan | None, outcome: Trajectory | str, attempts: int) -> AdaptationResult:
+    def _result(self, plan: Plan | None, outcome: Outcome, attempts: int) -> AdaptationResult:
         ok = isinstance(outcome, Trajectory)
         trajectory = outcome if isinstance(outcome, Trajectory) else None
         return AdaptationResult(
@@ -519,7 +557,7 @@ class AdaptationSession:
             status="ok" if ok else "error",
             plan=plan,
             trajectory=trajectory,
-            error=None if ok else str(outcome),
+            failure=outcome if isinstance(outcome, Failure) else None,
             attempts=attempts,
             backend=self.backend.name,
             model=self.backend.model,

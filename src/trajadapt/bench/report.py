@@ -39,11 +39,17 @@ def _rate(records: list[dict[str, Any]]) -> dict[str, Any]:
     }
 
 
+def _kind_of_older_result(record: dict[str, Any]) -> str:
+    """Result files written before ``error_kind`` existed: the error line's first word."""
+    match = re.match(r"(\w+)", str(record.get("error") or ""))
+    return match.group(1) if match else "unknown"
+
+
 def failure_kind(record: dict[str, Any]) -> str:
     """A short label for why a judged case failed: the error type, or the first failing check kind."""
     if record["status"] != "ok":
-        match = re.match(r"(\w+)", str(record.get("error") or ""))
-        return "error: " + (match.group(1) if match else "unknown")
+        kind = record.get("error_kind") or _kind_of_older_result(record)
+        return "error: " + kind
     failed = [c["kind"] for c in record["evaluation"]["checks"] if not c["passed"]]
     return "check: " + (failed[0] if failed else "none")
 

@@ -29,7 +29,7 @@ from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
 from trajadapt.geometry import AXIS_CONVENTIONS, Axes
 from trajadapt.sandbox.runner import Isolation, Sandbox
-from trajadapt.session import AdaptationSession, SessionSettings
+from trajadapt.session import AdaptationSession, Failure, SessionSettings
 from trajadapt.trajectory import Trajectory, read_json_file
 
 
@@ -215,7 +215,7 @@ def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchC
         session.draft()
         record = session.approve().to_dict()
     except TrajadaptError as exc:
-        record = session.failure(f"{type(exc).__name__}: {exc}").to_dict()
+        record = session.failure(Failure.of(type(exc).__name__, str(exc))).to_dict()
     record.update(
         {key: record["settings"][key] for key in ("mode", "waypoints_in_prompt", "project", "axes")}
     )

@@ -146,7 +146,7 @@ def add_version(live: LiveSession, request: str, plan: Plan, on: str = "original
     live.say("running the code for a preview")
     outcome = live.session.preview()
     proposed = outcome.to_rows() if isinstance(outcome, Trajectory) else None
-    problem = None if isinstance(outcome, Trajectory) else outcome
+    problem = None if isinstance(outcome, Trajectory) else outcome.message
     checkpoint = len(live.session.versions) - 1
     explanation = explain_code(plan.code)
     live.versions.append(

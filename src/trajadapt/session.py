@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
+from trajadapt import __version__
 from trajadapt.answer import Plan, parse_answer
 from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
@@ -35,7 +36,7 @@ from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.explain import explain_code
-from trajadapt.store import Store
+from trajadapt.store import NewExchange, NewSession, Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
 from trajadapt.unstated_amounts import replace_unstated_amounts
@@ -93,6 +94,7 @@ class SessionSettings:
     def describe(self) -> dict[str, Any]:
         """What reproduces a run, for result files and the log."""
         return {
+            "trajadapt_version": __version__,
             "mode": self.mode,
             "axes": self.axes.name,
             "temperature": self.temperature,
@@ -603,14 +605,15 @@ class AdaptationSession:
     def _start_log(self) -> None:
         if self.store is None:
             return
-        self.session_id = self.store.start_session({
-            "case_name": self.case.name,
-            "case_source": str(self.case.source) if self.case.source else None,
-            "instruction": self.case.instruction,
-            "backend": self.backend.name,
-            "model": self.backend.model,
-            "case": self.case.to_dict(),
-        })  # fmt: skip
+        self.session_id = self.store.start_session(NewSession(
+            case_name=self.case.name,
+            case_source=str(self.case.source) if self.case.source else None,
+            instruction=self.case.instruction,
+            backend=self.backend.name,
+            model=self.backend.model,
+            case=self.case.to_dict(),
+            settings=self.settings.describe(),
+        ))  # fmt: skip
 
     def _record(self, turn: Turn) -> None:
         self.turns.append(turn)
@@ -633,13 +636,14 @@ class AdaptationSession:
     ) -> None:
         if self.store is None or self.session_id is None:
             return
-        self.store.log_exchange(self.session_id, kind, {
-            "user_text": details.pop("user_text", None),
-            "request": details.pop("request", None),
-            "answer": details.pop("answer", None),
-            "plan": "\n".join(details.get("plan") or []),
-            "code": code,
-            "outcome": details,
-            "error": error,
-            "timings": timings,
-        })  # fmt: skip
+        self.store.log_exchange(self.session_id, NewExchange(
+            kind=kind,
+            code=code,
+            user_text=details.pop("user_text", None),
+            request=details.pop("request", None),
+            answer=details.pop("answer", None),
+            plan="\n".join(details.get("plan") or []),
+            outcome=details,
+            error=error,
+            timings=timings,
+        ))  # fmt: skip

@@ -9,7 +9,7 @@ import time
 import uuid
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
@@ -43,7 +43,61 @@ MIGRATIONS = (
     );
     CREATE INDEX exchanges_session ON exchanges(session_id);
     """,
+    "ALTER TABLE sessions ADD COLUMN settings_json TEXT;",
 )
+
+
+@dataclass(frozen=True)
+class NewSession:
+    """A session to log: the case, who answers it, and the settings that reproduce the run.
+
+    ``settings`` holds mode, axes, temperature, seed, max tokens and the rest of
+    ``SessionSettings.describe()``, plus the trajadapt version.
+    """
+
+    case_name: str
+    case_source: str | None
+    instruction: str
+    backend: str
+    model: str
+    case: dict[str, Any]
+    settings: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class NewExchange:
+    """One exchange to log.
+
+    A draft, feedback, repair or format retry (with the request and answer), an execution (with its
+    outcome) or an undo.
+    """
+
+    kind: str
+    code: str = ""
+    user_text: str | None = None
+    request: list[dict[str, str]] | None = None
+    answer: str | None = None
+    plan: str = ""
+    outcome: dict[str, Any] | None = None
+    error: str | None = None
+    timings: dict[str, Any] | None = None
+
+
+@dataclass(frozen=True)
+class SessionSummary:
+    """A logged session as the session list shows it."""
+
+    id: str
+    created: float
+    case_name: str
+    instruction: str
+    backend: str
+    model: str
+    settings: dict[str, Any]
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form for the page."""
+        return asdict(self)
 
 
 @dataclass(frozen=True)
@@ -116,30 +170,29 @@ class Store:
         with self._lock:
             return self._connection.execute(query, parameters).fetchall()
 
-    def start_session(self, fields: dict[str, Any]) -> str:
+    def start_session(self, new: NewSession) -> str:
         """Record a new session; returns its id."""
         session_id = uuid.uuid4().hex[:12]
         with self._transaction() as cursor:
             cursor.execute(
                 "INSERT INTO sessions (id, created, case_name, case_source, instruction, backend, "
-                "model, case_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
-                (session_id, time.time(), _text(fields.get("case_name")), _text(fields.get("case_source")),
-                 _text(fields.get("instruction")), _text(fields.get("backend")), _text(fields.get("model")),
-                 _json(fields.get("case"))),
+                "model, case_json, settings_json) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                (session_id, time.time(), _text(new.case_name), _text(new.case_source),
+                 _text(new.instruction), _text(new.backend), _text(new.model), _json(new.case),
+                 _json(new.settings)),
             )  # fmt: skip
         return session_id
 
-    def log_exchange(self, session_id: str, kind: str, fields: dict[str, Any]) -> int:
-        """Record one exchange (draft, feedback, repair or execution) of a session."""
+    def log_exchange(self, session_id: str, new: NewExchange) -> int:
+        """Record one exchange (draft, feedback, repair, execution or undo) of a session."""
         with self._transaction() as cursor:
             cursor.execute(
                 "INSERT INTO exchanges (session_id, created, kind, user_text, request_json, "
                 "answer, plan, code, outcome_json, error, timings_json) "
                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                (session_id, time.time(), kind, _text(fields.get("user_text")),
-                 _json(fields.get("request")), _text(fields.get("answer")), _text(fields.get("plan")),
-                 _text(fields.get("code")), _json(fields.get("outcome")), _text(fields.get("error")),
-                 _json(fields.get("timings"))),
+                (session_id, time.time(), new.kind, _text(new.user_text), _json(new.request),
+                 _text(new.answer), _text(new.plan), _text(new.code), _json(new.outcome),
+                 _text(new.error), _json(new.timings)),
             )  # fmt: skip
             return int(cursor.lastrowid or 0)
 
@@ -157,14 +210,25 @@ class Store:
         rows = self._read(query, (*parameters, limit))
         return [_record(row) for row in reversed(rows)]
 
-    def recent_sessions(self, limit: int = 50) -> list[dict[str, Any]]:
-        """The latest sessions, newest first: id, created, case name, instruction, backend, model."""
+    def recent_sessions(self, limit: int = 50) -> list[SessionSummary]:
+        """The latest sessions, newest first."""
         rows = self._read(
-            "SELECT id, created, case_name, instruction, backend, model FROM sessions "
+            "SELECT id, created, case_name, instruction, backend, model, settings_json FROM sessions "
             "ORDER BY created DESC LIMIT ?",
             (limit,),
         )
-        return [dict(row) for row in rows]
+        return [
+            SessionSummary(
+                id=row["id"],
+                created=row["created"],
+                case_name=row["case_name"] or "",
+                instruction=row["instruction"] or "",
+                backend=row["backend"] or "",
+                model=row["model"] or "",
+                settings=json.loads(row["settings_json"] or "null") or {},
+            )  # fmt: skip
+            for row in rows
+        ]
 
     def session_case(self, session_id: str) -> Any:
         """The case a session worked on (OVITA form), or None for an unknown id."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from fastapi.testclient import TestClient
 
 from tests.web.conftest import CASE, FIRST, SECOND, build_app, wait_idle
@@ -140,3 +141,25 @@ def test_the_pages_limits_bind_the_session_and_the_effect_says_what_they_moved(c
     ):
         refused = client.post("/api/sessions", json={"case": CASE, "instruction": "go left", "limits": bad})
         assert refused.status_code == 400 and words in refused.json()["error"]
+
+
+def test_a_server_with_logging_off_writes_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from trajadapt.cli.serve import _build_app
+    from trajadapt.constraints import Constraints
+    from trajadapt.settings import load_settings
+
+    home = tmp_path / "home"
+    monkeypatch.setenv("TRAJADAPT_HOME", str(home))
+    monkeypatch.setenv("TRAJADAPT_ISOLATION", "process")
+    answers = tmp_path / "answers.json"
+    answers.write_text(json.dumps([json.dumps(FIRST)]))
+    settings = load_settings({"backend": "scripted", "log": False})
+    app = _build_app(settings, None, (("answers", str(answers)),), None, Constraints(), None, ("testserver",))
+    with TestClient(app) as client:
+        sid = start(client)["id"]
+        client.post(f"/api/sessions/{sid}/approve")
+        assert wait_idle(client, sid)["status"] == "approved"
+        assert [s["live"] for s in client.get("/api/sessions").json()["sessions"]] == [True]
+        missing = client.get("/api/sessions/abcdef")
+        assert missing.status_code == 409 and "logging is off" in missing.json()["error"]
+    assert not (home / "logs.db").exists()

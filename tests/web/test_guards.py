@@ -105,9 +105,9 @@ def test_fifty_parallel_sessions_are_all_logged(tmp_path: Path) -> None:
         assert len(sessions) == count
         exchanges = store.recent_exchanges(limit=10_000)
         logged = {exchange.session_id for exchange in exchanges}
-        assert logged == {session["id"] for session in sessions}
+        assert logged == {session.id for session in sessions}
         assert all(
-            sum(e.session_id == s["id"] and e.kind == "execution" for e in exchanges) >= 2 for s in sessions
+            sum(e.session_id == s.id and e.kind == "execution" for e in exchanges) >= 2 for s in sessions
         )
     finally:
         store.close()

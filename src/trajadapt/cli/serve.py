@@ -42,22 +42,32 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
               help="Use this GGUF file with the local backend.")  # fmt: skip
 @click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+@click.option("--no-log", is_flag=True, help="Do not log sessions (and list no earlier ones).")
 @limits_options
 def serve(
     host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None,
     allowed_hosts: tuple[str, ...], backend: str | None, options: tuple[tuple[str, str], ...],
-    model_path: Path | None, mode: str | None, axes: str | None, robot: str | None, limits: Constraints,
+    model_path: Path | None, mode: str | None, axes: str | None, no_log: bool, robot: str | None,
+    limits: Constraints,
 ) -> None:  # fmt: skip
     """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
 
-    Sessions are logged to the same SQLite log as 'adapt', so a restarted server lists earlier ones.
+    Sessions are logged to the same SQLite log as 'adapt', so a restarted server lists earlier ones
+    (not with --no-log or TRAJADAPT_LOG=false: then nothing is written).
     Binds to 127.0.0.1; another address needs --allow-remote, and then every request needs the token.
     The server answers only to loopback names, the bound address and --allowed-host names (a guard
     against DNS rebinding), and reads no request body over 8 MB. The robot and limit flags are the
     page's defaults; its Limits fields change them per session.
     """
     token = _access_token(host, allow_remote, token)
-    settings = load_settings({"backend": backend, "mode": mode, "axes": axes, "robot": robot})
+    overrides = {
+        "backend": backend,
+        "mode": mode,
+        "axes": axes,
+        "robot": robot,
+        "log": False if no_log else None,
+    }
+    settings = load_settings(overrides)
     app = _build_app(settings, cases_dir, options, model_path, limits, token, (host, *allowed_hosts))
     import uvicorn
 
@@ -109,7 +119,7 @@ def _build_app(
     services = Services(
         backend=make_backend(settings, options, model_path),
         sandbox=Sandbox(isolation=isolation_of(settings)),
-        store=Store(settings.log_path),
+        store=Store(settings.log_path) if settings.log else None,
         settings=session_settings,
         work_dir=settings.home / "web",
         cases_dir=cases_dir,

@@ -192,7 +192,9 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
         live = [{"id": s.id, "case_name": s.case.name, "instruction": s.case.instruction,
                  "status": s.status, "live": True} for s in state.live.values()]  # fmt: skip
         known = {session_id for s in state.live.values() for session_id in s.session.session_ids}
-        stored = [dict(s, live=False) for s in state.services.stored_sessions() if s["id"] not in known]
+        stored = [
+            {**s.to_dict(), "live": False} for s in state.services.stored_sessions() if s.id not in known
+        ]
         return {"sessions": live + stored}
 
     @app.post("/api/sessions")

@@ -10,12 +10,16 @@ from trajadapt.store import Store
 PLAN_KINDS = ("draft", "feedback", "repair")
 
 
-def stored_session(store: Store, session_id: str) -> dict[str, Any]:
+def stored_session(store: Store | None, session_id: str) -> dict[str, Any]:
     """A logged session in the shape the page draws (status ``stored``).
 
     Raises:
-        SessionStateError: no such session in the log.
+        SessionStateError: no such session in the log, or no log (logging is off).
     """
+    if store is None:
+        raise SessionStateError(
+            f"no session {session_id!r} on this server (logging is off: nothing is stored)"
+        )
     case = store.session_case(session_id)
     if case is None:
         raise SessionStateError(f"no session {session_id!r} on this server or in its log")

@@ -18,7 +18,7 @@ from trajadapt.errors import InputError
 from trajadapt.robot_limits import robot_constraints
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, SessionSettings
-from trajadapt.store import Store
+from trajadapt.store import SessionSummary, Store
 
 
 @dataclass
@@ -27,7 +27,7 @@ class Services:
 
     backend: Backend
     sandbox: Sandbox
-    store: Store
+    store: Store | None  # None: logging is off; nothing is written and no earlier session is listed
     settings: SessionSettings
     work_dir: Path
     cases_dir: Path | None = None
@@ -72,9 +72,9 @@ class Services:
             raise InputError(f"no case {name!r} in {self.cases_dir}")
         return load_case(path)
 
-    def stored_sessions(self) -> list[dict[str, Any]]:
+    def stored_sessions(self) -> list[SessionSummary]:
         """Sessions in the log (newest first)."""
-        return self.store.recent_sessions()
+        return self.store.recent_sessions() if self.store is not None else []
 
     def simulate(self, result: AdaptationResult, robot: str, folder: Path) -> dict[str, Any]:
         """Run ``result`` on ``robot``; the report with the picture and animation file names.

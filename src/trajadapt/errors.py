@@ -32,6 +32,14 @@ class InputError(TrajadaptError):
     """A case, trajectory or scene file is missing or malformed."""
 
 
+class InvalidWaypoints(TrajadaptError, ValueError):
+    """An array is not a trajectory: N x 4 (2 <= N <= 100,000), finite, within ±1e9, v >= 0.
+
+    Raised by ``Trajectory`` itself, the one place the rule is enforced; the edges map it to
+    ``InputError`` (a file) or ``InvalidTrajectory`` (generated code), naming the source.
+    """
+
+
 class BackendError(TrajadaptError):
     """The LLM backend could not be asked or did not answer usefully."""
 

@@ -7,49 +7,29 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.errors import InvalidTrajectory
+from trajadapt.errors import InvalidTrajectory, InvalidWaypoints
 from trajadapt.geometry import extent
-from trajadapt.trajectory import MAX_MAGNITUDE, Trajectory
+from trajadapt.trajectory import Trajectory
 
 JUMP_FACTOR = 3.0
 
 
 def validate_result(rows: Any) -> Trajectory:
-    """Turn the sandbox's raw rows into a Trajectory: N x 4, N >= 2, finite, v >= 0.
+    """Turn the sandbox's raw rows into a Trajectory (the rule is the Trajectory's own).
 
     Raises:
         InvalidTrajectory: saying what is wrong in words the repair prompt can pass on.
     """
-    array = np.asarray(rows, dtype=np.float64)
-    if array.ndim != 2 or array.shape[1] != 4:
+    try:
+        array = np.asarray(rows, dtype=np.float64)
+    except (ValueError, TypeError):
         raise InvalidTrajectory(
-            f"modified_trajectory has shape {array.shape}; it must be (N, 4) with rows (x, y, z, velocity)"
-        )
-    if array.shape[0] < 2:
-        raise InvalidTrajectory(
-            f"modified_trajectory has {array.shape[0]} waypoint(s); at least 2 are needed"
-        )
-    bad = np.argwhere(~np.isfinite(array))
-    if bad.size:
-        row, column = (int(v) for v in bad[0])
-        raise InvalidTrajectory(
-            f"modified_trajectory has {len(bad)} non-finite value(s) (NaN or inf), first at "
-            f"row {row}, column {'xyzv'[column]}"
-        )
-    huge = np.argwhere(np.abs(array) > MAX_MAGNITUDE)
-    if huge.size:
-        row, column = (int(v) for v in huge[0])
-        raise InvalidTrajectory(
-            f"modified_trajectory has {len(huge)} value(s) beyond ±{MAX_MAGNITUDE:.0e}, first at row {row}, "
-            f"column {'xyzv'[column]} ({array[row, column]:.3g}); keep the trajectory in the scene's units"
-        )
-    negative = np.flatnonzero(array[:, 3] < 0)
-    if negative.size:
-        raise InvalidTrajectory(
-            f"modified_trajectory has {negative.size} negative velocity value(s), first at row "
-            f"{int(negative[0])} ({array[negative[0], 3]:.3g}); velocities must be >= 0"
-        )
-    return Trajectory(array)
+            "modified_trajectory is not a table of numbers; it must be (N, 4) with rows (x, y, z, velocity)"
+        ) from None
+    try:
+        return Trajectory(array)
+    except InvalidWaypoints as exc:
+        raise InvalidTrajectory(f"modified_trajectory {str(exc).removeprefix('the trajectory ')}") from None
 
 
 @dataclass(frozen=True)

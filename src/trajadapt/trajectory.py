@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from trajadapt.errors import InputError
+from trajadapt.errors import InputError, InvalidWaypoints
 from trajadapt.safe_text import safe_text
 
 COLUMNS = ("x", "y", "z", "v")
@@ -27,7 +27,7 @@ MAX_FILE_BYTES = 64 * 1024 * 1024
 
 
 def validate_waypoints(rows: Any, where: str) -> npt.NDArray[np.float64]:
-    """Check that ``rows`` is an N x 4 table of finite numbers with v >= 0 and N >= 2.
+    """Read ``rows`` (nested sequences, e.g. parsed JSON) as an N x 4 table and check the trajectory rule.
 
     Args:
         rows: a nested sequence or array, one waypoint [x, y, z, v] a row.
@@ -43,26 +43,43 @@ def validate_waypoints(rows: Any, where: str) -> npt.NDArray[np.float64]:
         raise InputError(f"{where}: expected a list of [x, y, z, v] waypoints, got {_kind(rows)}")
     if len(rows) > MAX_WAYPOINTS:
         raise InputError(f"{where}: at most {MAX_WAYPOINTS} waypoints, got {len(rows)}; resample it first")
-    if len(rows) < MIN_WAYPOINTS:
-        raise InputError(f"{where}: a trajectory needs at least {MIN_WAYPOINTS} waypoints, got {len(rows)}")
     array = np.empty((len(rows), 4), dtype=np.float64)
     for index, row in enumerate(rows):
         array[index] = _validate_row(row, f"{where}[{index}]")
-    huge = np.argwhere(np.abs(array) > MAX_MAGNITUDE)
-    if huge.size:
-        row, column = (int(v) for v in huge[0])
-        raise InputError(
-            f"{where}[{row}]: {COLUMNS[column]} = {array[row, column]:.3g} is beyond ±{MAX_MAGNITUDE:.0e}; "
-            "no robot trajectory is that large (check the units)"
-        )
+    problem = waypoint_problem(array)
+    if problem is not None:
+        raise InputError(f"{where}: {problem}")
+    return array
+
+
+def waypoint_problem(array: npt.NDArray[np.float64]) -> str | None:
+    """What keeps ``array`` from being a trajectory, in words; None when it is one.
+
+    The rule: shape (N, 4) with 2 <= N <= MAX_WAYPOINTS, every value finite and within
+    ±MAX_MAGNITUDE, velocity >= 0.
+    """
+    if array.ndim != 2 or array.shape[1] != 4:
+        return f"has shape {array.shape}; it must be (N, 4) with rows (x, y, z, velocity)"
+    if array.shape[0] < MIN_WAYPOINTS:
+        return f"needs at least {MIN_WAYPOINTS} waypoints, got {array.shape[0]}"
+    if array.shape[0] > MAX_WAYPOINTS:
+        return f"has {array.shape[0]} waypoints, at most {MAX_WAYPOINTS} are allowed; resample it first"
+    for test, words in (
+        (~np.isfinite(array), "non-finite value(s) (NaN or inf)"),
+        (np.abs(array) > MAX_MAGNITUDE, f"value(s) beyond ±{MAX_MAGNITUDE:.0e} (check the units)"),
+    ):
+        bad = np.argwhere(test)
+        if bad.size:
+            row, column = (int(v) for v in bad[0])
+            return f"has {len(bad)} {words}, first at row {row}, {COLUMNS[column]} = {array[row, column]:.3g}"
     negative = np.flatnonzero(array[:, 3] < 0)
     if negative.size:
         first = int(negative[0])
-        raise InputError(
-            f"{where}[{first}]: velocity must be >= 0, got {array[first, 3]:g} "
-            f"({negative.size} waypoint(s) with negative velocity)"
+        return (
+            f"has {negative.size} negative velocity value(s), first at row {first} "
+            f"({array[first, 3]:g}); velocity must be >= 0"
         )
-    return array
+    return None
 
 
 def _validate_row(row: Any, where: str) -> list[float]:
@@ -105,12 +122,24 @@ def _kind(value: Any) -> str:
 
 @dataclass(frozen=True, eq=False)
 class Trajectory:
-    """An immutable sequence of waypoints; ``array`` is a read-only (N, 4) float64 array."""
+    """An immutable sequence of waypoints; ``array`` is a read-only (N, 4) float64 array.
+
+    Every Trajectory keeps the rule of ``waypoint_problem`` (N x 4, finite, v >= 0, ...): it is
+    checked here, once, and nowhere else.
+    """
 
     array: npt.NDArray[np.float64]
 
     def __post_init__(self) -> None:
+        """Copy the array read-only and enforce the trajectory rule (see ``waypoint_problem``).
+
+        Raises:
+            InvalidWaypoints: the array breaks the rule, in words.
+        """
         array = np.array(self.array, dtype=np.float64, copy=True)
+        problem = waypoint_problem(array)
+        if problem is not None:
+            raise InvalidWaypoints(f"the trajectory {problem}")
         array.setflags(write=False)
         object.__setattr__(self, "array", array)
 

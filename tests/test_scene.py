@@ -17,7 +17,7 @@ def test_objects_are_found_by_name_in_any_case_and_spacing() -> None:
 
 
 def test_names_that_clash_are_refused_in_words() -> None:
-    with pytest.raises(InputError, match="unique \(case-insensitive\); 'Box' and 'box' clash"):
+    with pytest.raises(InputError, match=r"unique \(case-insensitive\); 'Box' and 'box' clash"):
         parse_objects(
             [{"name": "Box", "x": 0, "y": 0, "z": 0}, {"name": "box ", "x": 1, "y": 0, "z": 0}], "scene"
         )

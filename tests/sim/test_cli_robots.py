@@ -65,3 +65,20 @@ def test_plan_explains_a_blocked_start(tmp_path: Path) -> None:
                      "0", "--planner", "astar", "--out", str(tmp_path / "p.json"))  # fmt: skip
     assert result.exit_code == 1 and "PlanningError: the start" in result.output
     assert not (tmp_path / "p.json").exists()
+
+
+def test_simulate_reads_the_convention_the_result_was_adapted_in(tmp_path: Path) -> None:
+    from trajadapt.sim.inputs import load_run_input
+
+    rows = [[0.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]]
+    result = {
+        "modified_trajectory": rows,
+        "original_trajectory": rows,
+        "objects": [],
+        "settings": {"axes": "ovita"},
+    }
+    path = tmp_path / "r.result.json"
+    path.write_text(json.dumps(result))
+    assert load_run_input(path).axes == "ovita"
+    path.write_text(json.dumps({**result, "settings": {"axes": "sideways"}}))
+    assert load_run_input(path).axes is None  # unknown: the settings decide

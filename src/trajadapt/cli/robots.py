@@ -11,6 +11,7 @@ from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.case import load_scene
 from trajadapt.errors import InputError
 from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.settings import load_settings
 from trajadapt.sim.inputs import load_run_input
 
 ROBOT_NAMES = ("arm", "drone", "ground")
@@ -44,10 +45,10 @@ ROBOT_NAMES = ("arm", "drone", "ground")
 )
 @click.option(
     "--axes",
-    type=click.Choice(["paper", "ovita"]),
-    default="paper",
-    show_default=True,
-    help="The case's convention: paper (+X left; mirrored onto the robot) or ovita (+X right).",
+    type=click.Choice(sorted(AXIS_CONVENTIONS)),
+    default=None,
+    help="The case's convention: paper (+X left; mirrored onto the robot) or ovita (+X right). "
+    "Default: the one the result was adapted in, else TRAJADAPT_AXES / config.toml (paper).",
 )
 @click.option(
     "--gui", is_flag=True, help="Open pybullet's window and run at wall-clock pace (needs a display)."
@@ -60,7 +61,7 @@ ROBOT_NAMES = ("arm", "drone", "ground")
 )
 def simulate(
     result_file: Path, robot: str, gif_file: Path | None, image_file: Path | None, report_file: Path | None,
-    axes: str, gui: bool, scale: float | None, offset: tuple[float, float, float] | None,
+    axes: str | None, gui: bool, scale: float | None, offset: tuple[float, float, float] | None,
 ) -> None:  # fmt: skip
     """Execute RESULT_FILE (a result from 'adapt' or a case file) on a simulated robot.
 
@@ -75,10 +76,11 @@ def simulate(
 def run_and_report(
     source: Path, robot: str, image: Path | None = None, report_file: Path | None = None,
     gif: Path | None = None, gui: bool = False, scale: float | None = None,
-    offset: tuple[float, float, float] | None = None, axes: str = "paper",
+    offset: tuple[float, float, float] | None = None, axes: str | None = None,
 ) -> None:  # fmt: skip
     """Simulate ``source`` and print and write the report (shared by 'simulate' and 'adapt --simulate').
 
+    ``axes`` (None: the result's own, else the settings') says which way +X points.
     The picture and report default to ``<source stem>.<robot>.png`` and ``.<robot>.sim.json`` beside it.
     """
     image = image or sibling_file(source, f".{robot}.png")
@@ -89,7 +91,7 @@ def run_and_report(
     if offset is not None and scale is None:
         raise InputError("--offset needs --scale (without both, the map is fitted to the workspace)")
     run = load_run_input(source)
-    positive_x = AXIS_CONVENTIONS[axes].positive_x
+    positive_x = AXIS_CONVENTIONS[axes or run.axes or load_settings().axes].positive_x
     options = SimulationOptions(
         gui=gui, scale=scale, offset=offset, image=image, animation=gif, realtime=gui, positive_x=positive_x
     )

@@ -18,6 +18,7 @@ class RunInput:
     trajectory: Trajectory
     original: Trajectory | None
     scene: Scene
+    axes: str | None = None  # the convention a result was adapted in (its recorded settings)
 
 
 def load_run_input(path: Path) -> RunInput:
@@ -37,8 +38,13 @@ def load_run_input(path: Path) -> RunInput:
         original = None
         if data.get("original_trajectory"):
             original = Trajectory.from_rows(data["original_trajectory"], f"{path}: original_trajectory")
+        settings = data.get("settings")
+        axes = settings.get("axes") if isinstance(settings, dict) else None
         return RunInput(
-            trajectory, original, Scene(objects=parse_objects(data.get("objects"), f"{path}: objects"))
+            trajectory,
+            original,
+            Scene(objects=parse_objects(data.get("objects"), f"{path}: objects")),
+            axes if axes in ("paper", "ovita") else None,
         )
     case = case_from_dict(data, str(path), name=path.stem)
     return RunInput(case.trajectory, None, case.scene)

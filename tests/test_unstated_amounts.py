@@ -70,3 +70,45 @@ def test_numbers_written_as_words_count() -> None:
     code = START + step + END
     assert replace_unstated_amounts(code, ["increase the distance by two times from the table"]) == (code, [])
     assert replace_unstated_amounts(code, ["twice as far from the table"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        ("walk a lot slower near the box", "t = scale_speed(t, 0.65, near=detect_objects('box'))", 0.45),
+        ("go very faster", "t = scale_speed(t, 1.4)", 1.6),
+        ("go slightly upwards and a bit faster", "t = scale_speed(t, 1.6)", 1.25),
+        ("go faster", "t = scale_speed(t, 2.5)", 1.4),
+        ("go a lot to the left and slower", "t = scale_speed(t, 0.3)", 0.65),  # 'a lot' is the shift's
+    ],
+)
+def test_a_made_up_speed_factor_becomes_the_phrase_tables(
+    instruction: str, step: str, expected: float
+) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert f"scale_speed(t, {expected}" in steps(code)[0] and "gives no such number" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("go 20% faster", "t = scale_speed(t, 1.2)"),
+        ("twice as fast", "t = scale_speed(t, 2.0)"),
+        ("half as fast near the box", "t = scale_speed(t, 0.5, near=detect_objects('box'))"),
+        ("four times slower", "t = scale_speed(t, 0.25)"),
+    ],
+)
+def test_stated_speed_factors_stay(instruction: str, step: str) -> None:
+    assert replace_unstated_amounts(START + step + END, [instruction]) == (START + step + END, [])
+
+
+def test_the_phrase_table_in_the_prompt_is_the_calibrated_one() -> None:
+    from importlib import resources
+
+    from trajadapt.skills.speed import SPEED_FACTORS
+
+    prompt = resources.files("trajadapt.prompts").joinpath("system_skills.md").read_text(encoding="utf-8")
+    for direction, sizes in SPEED_FACTORS.items():
+        for size, factor in sizes.items():
+            phrase = f'"{size + " " if size else "walk "}{direction}" -> '
+            assert phrase in prompt and f"{factor}" in prompt.split(phrase, 1)[1][:40], (direction, size)

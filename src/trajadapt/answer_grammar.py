@@ -119,6 +119,7 @@ def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
         ),
         "profile": _quoted_words(PROFILES),
         "height": Ref("number"),
+        "factor": Ref("number"),
     }
 
 

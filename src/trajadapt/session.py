@@ -36,6 +36,7 @@ from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.explain import explain_code
+from trajadapt.speed_scope import localize_speed
 from trajadapt.store import NewExchange, NewSession, Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
@@ -470,7 +471,8 @@ class AdaptationSession:
         names = [obj.name for obj in self.case.scene.objects]
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
-        self._left_out = left_out + replaced
+        code, placed = localize_speed(code, self._asked, names)
+        self._left_out = left_out + replaced + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

@@ -6,7 +6,10 @@ know (latte-dev's paths are 0.6 wide: a third of the scene). In skills code, a n
 where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``move_away``'s,
 ``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
 converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
-or removed so that the skill's calibrated default applies. A review note says so.
+or removed so that the skill's calibrated default applies. A speed factor the user never gave
+(``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated factor of the prompt's phrase
+table for the words of the speed's own clause ('a bit', none, 'a lot'), in the direction the model
+chose; "by 20%", "twice", "half as fast" are stated factors. A review note says so.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from trajadapt.answer_grammar import skill_parameters
 from trajadapt.code_parse import parse_code
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
+from trajadapt.skills.speed import SPEED_FACTORS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
@@ -49,6 +53,32 @@ def is_stated(value: float, numbers: list[float]) -> bool:
     return any(abs(abs(value) - n * f) <= 1e-6 * max(1.0, n * f) for n in numbers for f in UNIT_FACTORS)
 
 
+def is_stated_factor(value: float, numbers: list[float]) -> bool:
+    """Whether a speed factor comes from the user's numbers: n, 1/n, or 1 +- n% ('20% faster')."""
+    candidates = [n for n in numbers] + [1 / n for n in numbers if n] + [1 + n / 100 for n in numbers]
+    candidates += [1 - n / 100 for n in numbers if n < 100]
+    return any(abs(value - c) <= 1e-6 * max(1.0, c) for c in candidates)
+
+
+SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
+CLAUSES = re.compile(r"[,.;!?]|\b(?:and|then|but|while)\b", re.I)
+
+
+def speed_factor(words: str, faster: bool) -> float:
+    """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
+    clause = next((c for c in CLAUSES.split(words) if SPEED_WORDS.search(c)), "")
+    word = intensity_word(clause)
+    strength = AMOUNT_WORDS.get(word or "", AMOUNT_WORDS["default"])
+    size = (
+        "a bit"
+        if strength < AMOUNT_WORDS["default"]
+        else "a lot"
+        if strength > AMOUNT_WORDS["default"]
+        else ""
+    )
+    return SPEED_FACTORS["faster" if faster else "slower"][size]
+
+
 def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with made-up distances replaced (see the module docstring), and a note per change."""
     words = " ".join(asked)
@@ -58,7 +88,7 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if _made_up_height(line, numbers):
             notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
             continue
-        changed = _replace_in_line(line, numbers, word)
+        changed = _replace_in_line(line, numbers, word) or _calibrate_factor(line, numbers, words)
         if changed is not None and changed != line.strip():
             notes.append(
                 f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so "
@@ -126,6 +156,27 @@ def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str |
         return None
     _drop_trailing_defaults(call, BY_NAME[name])
     return ast.unparse(tree)
+
+
+def _calibrate_factor(line: str, numbers: list[float], words: str) -> str | None:
+    """The line with a made-up speed factor set to the calibrated one for the user's words."""
+    found = _skill_call(line)
+    if found is None:
+        return None
+    tree, call, name = found
+    kinds = [kind for _, kind in skill_parameters(BY_NAME[name])]
+    given = [(kinds[i] if i < len(kinds) else "", a) for i, a in enumerate(call.args)]
+    for kind, argument in given:
+        if kind != "factor" or not isinstance(argument, ast.Constant):
+            continue
+        value = argument.value
+        if not isinstance(value, int | float) or isinstance(value, bool) or value <= 0 or value == 1:
+            continue
+        if is_stated_factor(float(value), numbers):
+            continue
+        argument.value = speed_factor(words, faster=value > 1)
+        return ast.unparse(tree)
+    return None
 
 
 def _drop_trailing_defaults(call: ast.Call, function: object) -> None:

@@ -24,9 +24,11 @@ SAMPLE = {  # one argument text per kind
     "count": "7",
     "flag": "False",
     "height": "0.37",
+    "factor": "0.37",
 }
 SHOWN = {"point": "teapot", "points": "kettle", "direction": "left", "distance": "0.37", "fraction": "50%",
-         "part": "end", "waypoint": "goal", "profile": "decelerate", "number": "0.37", "count": "7", "height": "0.37"}  # fmt: skip
+         "part": "end", "waypoint": "goal", "profile": "decelerate", "number": "0.37", "count": "7", "height": "0.37",
+         "factor": "0.37"}  # fmt: skip
 
 
 @pytest.mark.parametrize("skill", [f for f in SKILLS if is_statement_skill(f)], ids=lambda f: f.__name__)

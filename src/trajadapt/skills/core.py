@@ -21,8 +21,8 @@ class ArgKind:
 
     Kinds: trajectory, point, points, direction, distance (a number or an amount word), fraction
     (0..1 or a closeness word), part (a word or a pair), waypoint (an index, a word or a point),
-    profile (a speed-profile name), height (an absolute z). Plain ``float``, ``int`` and ``bool``
-    parameters need no kind.
+    profile (a speed-profile name), height (an absolute z), factor (a speed multiplier). Plain
+    ``float``, ``int`` and ``bool`` parameters need no kind.
     """
 
     name: str
@@ -38,6 +38,7 @@ PartArg = Annotated[Any, ArgKind("part")]
 WaypointArg = Annotated[Any, ArgKind("waypoint")]
 ProfileArg = Annotated[str, ArgKind("profile")]
 HeightArg = Annotated[float, ArgKind("height")]
+FactorArg = Annotated[float, ArgKind("factor")]
 
 # Vague amount words, as fractions of the trajectory's size (largest side of its bounding box).
 # Calibrated on latte-dev's targets with benchmarks/latte_oracle.py (README, "Calibrated amounts"):

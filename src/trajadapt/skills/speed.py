@@ -12,6 +12,7 @@ import numpy as np
 
 from trajadapt.geometry import Array, extent, progress
 from trajadapt.skills.core import (
+    FactorArg,
     PartArg,
     PointArg,
     ProfileArg,
@@ -24,6 +25,12 @@ from trajadapt.skills.core import (
 )
 
 PROFILES = ("constant", "trapezoidal", "accelerate", "decelerate")
+
+SPEED_FACTORS = {
+    "faster": {"a bit": 1.25, "": 1.4, "a lot": 1.6},
+    "slower": {"a bit": 0.75, "": 0.65, "a lot": 0.45},
+}
+"""The factor of "a bit faster", "faster", "a lot faster" (and slower): the prompt's phrase table."""
 
 NEAR_REACH = 0.4  # how far (fraction of the path's size) "near an object" reaches beyond the closest pass
 # (calibrated on latte-dev with the factors of the prompt's phrase table: 0.2 before)
@@ -50,7 +57,7 @@ def speed_weight(trajectory: Any, near: Any = None, radius: float | None = None,
 
 def scale_speed(
     trajectory: TrajectoryArg,
-    factor: float,
+    factor: FactorArg,
     near: PointArg = None,
     radius: float | None = None,
     part: PartArg = None,

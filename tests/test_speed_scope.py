@@ -1,0 +1,48 @@
+"""A speed change the words place near one object, written for the whole path, is placed there."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.speed_scope import localize_speed, scoped_object
+
+NAMES = ["box", "red box", "person"]
+CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("instruction", "target"),
+    [
+        ("walk a lot faster in the proximity of the person", "person"),
+        ("go slower while passing close to the red box", "red box"),  # the longest name that matches
+        ("drive much faster while passing nearby the box", "box"),
+        ("go faster near the box and slower near the person", None),  # two speed clauses
+        ("go faster and pass closer to the box", None),  # the speed clause names no object
+        ("go faster with the box", None),  # no place word
+        ("go slower near the box or the person", None),  # two objects
+    ],
+)
+def test_the_one_place_of_the_one_speed_clause(instruction: str, target: str | None) -> None:
+    assert scoped_object(instruction, NAMES) == target
+
+
+def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
+    code, notes = localize_speed(
+        CODE.format(step="t = scale_speed(t, 1.6)"), ["go a lot faster near the person"], NAMES
+    )
+    assert "t = scale_speed(t, 1.6, near=detect_objects('person'))" in code.splitlines()
+    assert "changes the speed near person, not everywhere" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "step",
+    [
+        "t = scale_speed(t, 1.6, part='end')",  # a place of its own
+        "t = set_speed(t, 0.2, detect_objects('box'))",
+        "t = scale_speed(t, 1.6)\nt = scale_speed(t, 0.5)",  # which one? left alone
+        "t = shift(t, 'left')",
+    ],
+)
+def test_steps_with_a_place_or_ambiguous_ones_stay(step: str) -> None:
+    code = CODE.format(step=step)
+    assert localize_speed(code, ["go faster near the person"], NAMES) == (code, [])

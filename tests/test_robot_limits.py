@@ -161,3 +161,14 @@ def test_adapt_takes_the_robot_and_limit_flags(tmp_path: Path, simple_case: Case
     assert "your workspace -1 0.2 -5 5 -5 5" in record["settings"]["constraints"]
     bad = CliRunner().invoke(cli, [*args[:-7], "--reach", "1", "0.5", "--reach-base", "0", "0", "0"])
     assert bad.exit_code == 1 and "need 0 <= MIN < MAX" in bad.output and "Traceback" not in bad.output
+
+
+def test_a_pause_stays_a_pause_and_a_longer_result_keeps_the_originals_goal() -> None:
+    original = line(count=20, z=0.0)
+    paused = np.vstack([original[:10], np.repeat(original[9:10], 5, axis=0) * [1, 1, 1, 0], original[10:]])
+    paused[:, 0] -= 0.3  # out of the room on the right side, everywhere
+    limits = Constraints(lower=(-0.1, -5, -5), upper=(5, 5, 5), keep_goal=True)
+    projection = project(paused, original, Scene(), limits)
+    positions = projection.trajectory[:, :3]
+    assert np.allclose(positions[9:15], positions[9])  # still standing at one place for the pause
+    assert np.allclose(positions[-1], original[-1, :3]) and positions[:, 0].min() >= -0.1 - 1e-6

@@ -52,9 +52,35 @@ class Projection:
 def project(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Projection:
     """Return the nearest smooth trajectory that satisfies ``constraints``.
 
+    A pause (consecutive waypoints at one position) stays a pause: the problem is solved on one
+    waypoint per run of equal positions and the answer is spread back over the run.
+
     Raises:
         DependencyNotInstalled: osqp or scipy is missing.
     """
+    runs = _runs_of_equal_positions(trajectory)
+    firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
+    compact = _project_distinct(trajectory[firsts], original, scene, constraints)
+    projected = trajectory.copy()
+    projected[:, :3] = compact[runs, :3]
+    if constraints.max_speed is not None:
+        projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
+    remaining = tuple(v.message for v in find_violations(projected, original, scene, constraints))
+    largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
+    broken = new_violations(trajectory, original, scene, constraints)
+    return Projection(projected, largest, remaining, constraint_moves(trajectory, projected, broken))
+
+
+def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
+    """For each waypoint, the number of its run of consecutive waypoints at the same position."""
+    scale = max(float(np.ptp(trajectory[:, :3], axis=0).max()), 1.0)
+    moved = np.linalg.norm(np.diff(trajectory[:, :3], axis=0), axis=1) > 1e-12 * scale
+    runs: np.ndarray = np.r_[0, np.cumsum(moved)]
+    return runs
+
+
+def _project_distinct(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
+    """The projection of a trajectory without repeated positions (see ``project``)."""
     positions = trajectory[:, :3].copy()
     for _ in range(ROUNDS):
         positions = _solve(positions, trajectory[:, :3], original, scene, constraints)
@@ -66,12 +92,8 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
         if keep:
             projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
-    if constraints.max_speed is not None:
-        projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
-    remaining = tuple(v.message for v in find_violations(projected, original, scene, constraints))
-    largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
-    broken = new_violations(trajectory, original, scene, constraints)
-    return Projection(projected, largest, remaining, constraint_moves(trajectory, projected, broken))
+    result: Array = projected
+    return result
 
 
 def constraint_moves(before: Array, after: Array, broken: list[Violation]) -> tuple[ConstraintMove, ...]:
@@ -173,11 +195,11 @@ def _constraint_rows(
     count = len(around)
     rows: list[Any] = [sparse.eye(3 * count, format="csr")]
     low, high = [], []
-    lower = np.tile([_finite(v, -1e9) for v in constraints.lower], count)
-    upper = np.tile([_finite(v, 1e9) for v in constraints.upper], count)
-    for index, keep in ((0, constraints.keep_start), (count - 1, constraints.keep_goal)):
-        if keep:
-            lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = original[index, :3]
+    lower = np.tile(np.array([_finite(v, -1e9) for v in constraints.lower], dtype=np.float64), count)
+    upper = np.tile(np.array([_finite(v, 1e9) for v in constraints.upper], dtype=np.float64), count)
+    for index, keep, fixed in ((0, constraints.keep_start, 0), (count - 1, constraints.keep_goal, -1)):
+        if keep:  # the original's own end: the result may have another number of waypoints
+            lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = original[fixed, :3]
     low.append(lower)
     high.append(upper)
     for row, bound in _clearance_rows(around, scene, constraints):

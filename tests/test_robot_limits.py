@@ -17,6 +17,7 @@ from trajadapt.constraints import (
     Constraints,
     approached_objects,
     constraints_for,
+    distance_to,
     find_violations,
     index_ranges,
 )
@@ -172,3 +173,15 @@ def test_a_pause_stays_a_pause_and_a_longer_result_keeps_the_originals_goal() ->
     positions = projection.trajectory[:, :3]
     assert np.allclose(positions[9:15], positions[9])  # still standing at one place for the pause
     assert np.allclose(positions[-1], original[-1, :3]) and positions[:, 0].min() >= -0.1 - 1e-6
+
+
+def test_clearance_is_measured_from_an_objects_box_when_its_size_is_known() -> None:
+    path = line()  # along y at x = 0, z = 0.6
+    table = SceneObject("table", 0.5, 0.0, 0.6, dimensions=(0.6, 0.6, 0.2))  # box edge at x = 0.2
+    limits = Constraints(min_clearance=0.25)
+    (violation,) = find_violations(path, path, Scene((table,)), limits)
+    assert "within 0.2 of table; keep 0.25" in violation.message  # 0.2 to the box, 0.5 to its centre
+    assert find_violations(path, path, Scene((replace(table, dimensions=None),)), limits) == []
+    projection = project(path, path, Scene((table,)), limits)
+    assert not projection.remaining
+    assert distance_to(projection.trajectory, table).min() >= 0.25 - 1e-6

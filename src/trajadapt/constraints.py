@@ -19,7 +19,7 @@ from typing import TypeVar
 import numpy as np
 
 from trajadapt.geometry import Array
-from trajadapt.scene import Scene, name_key
+from trajadapt.scene import Scene, SceneObject, name_key
 
 _T = TypeVar("_T")
 
@@ -46,7 +46,9 @@ class Constraints:
     """Limits on an adapted trajectory. ``None`` means not constrained.
 
     Clearance applies to the objects in ``clearance_objects`` (empty: every object) except those in
-    ``approached`` (objects the instruction asks to come near; see ``approached_objects``).
+    ``approached`` (objects the instruction asks to come near; see ``approached_objects``). It is
+    measured from an object's box when its dimensions are known (OVITA: "from the boundaries of all
+    objects"), else from its centre; the projection keeps it from the sphere that holds the box.
     """
 
     lower: tuple[float, float, float] = (-math.inf, -math.inf, -math.inf)
@@ -300,6 +302,20 @@ def _bound_violations(trajectory: Array, constraints: Constraints, slack: float)
     return found
 
 
+def distance_to(trajectory: Array, obj: SceneObject) -> Array:
+    """Each waypoint's distance to the object: to its box when its dimensions are known, else its centre."""
+    offsets = np.abs(trajectory[:, :3] - np.asarray(obj.position))
+    if obj.dimensions is not None:
+        offsets = np.maximum(offsets - np.asarray(obj.dimensions) / 2, 0.0)
+    distances: Array = np.linalg.norm(offsets, axis=1)
+    return distances
+
+
+def enclosing_radius(obj: SceneObject) -> float:
+    """Half the diagonal of the object's box (0 without dimensions): a sphere that holds the box."""
+    return 0.0 if obj.dimensions is None else float(np.linalg.norm(obj.dimensions) / 2)
+
+
 def _clearance_violations(
     trajectory: Array, scene: Scene, constraints: Constraints, slack: float
 ) -> list[Violation]:
@@ -309,7 +325,7 @@ def _clearance_violations(
     for obj in scene.objects:
         if not constraints.keeps_clear_of(obj.name):
             continue
-        distance = np.linalg.norm(trajectory[:, :3] - np.asarray(obj.position), axis=1)
+        distance = distance_to(trajectory, obj)
         close = distance < constraints.min_clearance - slack
         if close.any():
             found.append(

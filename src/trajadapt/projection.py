@@ -23,7 +23,14 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.constraints import ConstraintMove, Constraints, Violation, find_violations, new_violations
+from trajadapt.constraints import (
+    ConstraintMove,
+    Constraints,
+    Violation,
+    enclosing_radius,
+    find_violations,
+    new_violations,
+)
 from trajadapt.errors import DependencyNotInstalled
 from trajadapt.geometry import Array
 from trajadapt.scene import Scene
@@ -147,9 +154,11 @@ def _finish(
 def _push_into(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
     """Push waypoints out of objects' clearance, into the reach shell and the bounds; keep fixed ends."""
     fixed = trajectory.copy()
-    centres = [np.asarray(o.position) for o in scene.objects if constraints.keeps_clear_of(o.name)]
-    if constraints.min_clearance is not None and centres:
-        fixed = avoid(fixed, centres, constraints.min_clearance)
+    if constraints.min_clearance is not None:
+        for obj in (o for o in scene.objects if constraints.keeps_clear_of(o.name)):
+            fixed = avoid(
+                fixed, [np.asarray(obj.position)], constraints.min_clearance + enclosing_radius(obj)
+            )
     if constraints.reach is not None:
         base = np.asarray(constraints.reach.base)
         offsets = fixed[:, :3] - base
@@ -222,7 +231,6 @@ def _clearance_rows(around: Array, scene: Scene, constraints: Constraints) -> li
     """
     if constraints.min_clearance is None:
         return []
-    clearance = constraints.min_clearance * 1.05  # a margin: the linearisation moves with the path
     track = np.c_[around, np.zeros(len(around))]
     heading = np.gradient(around, axis=0)
     heading /= np.maximum(np.linalg.norm(heading, axis=1, keepdims=True), 1e-12)
@@ -230,6 +238,8 @@ def _clearance_rows(around: Array, scene: Scene, constraints: Constraints) -> li
     for obj in scene.objects:
         if not constraints.keeps_clear_of(obj.name):
             continue
+        # a margin: the linearisation moves with the path; the sphere holds the object's box
+        clearance = (constraints.min_clearance + enclosing_radius(obj)) * 1.05
         centre = np.asarray(obj.position)
         offsets = around - centre
         along = np.sum(offsets * heading, axis=1)

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
+from trajadapt.case import load_case
 from trajadapt.geometry import Axes
 from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
 from trajadapt.skills.core import AMOUNT_WORDS, as_point, resolve_amount
@@ -299,3 +302,18 @@ def test_a_zero_amount_means_the_default_amount() -> None:
 def test_wrong_direction_words_say_what_to_use(word: str, advice: str) -> None:
     with pytest.raises(ValueError, match=advice.replace("(", "\\(")):
         shape.shift(curve(), word, 0.1)
+
+
+def test_a_bend_near_the_goal_passes_through_without_blowing_up(ovita_dir: Path) -> None:
+    case = load_case(
+        ovita_dir / "manipulator" / "trajectory_16.json"
+    )  # a path whose steps shrink near the goal
+    t = case.trajectory.array.copy()
+    found = {o.name: np.array(o.position) for o in case.scene.objects}
+    target = objects.midpoint(found["banana"], found["glue"])
+    out = objects.pass_through(t, target)
+    before = np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max()
+    after = np.linalg.norm(np.diff(out[:, :3], axis=0), axis=1).max()
+    assert np.linalg.norm(out[:, :3] - target, axis=1).min() < 1e-9  # through it exactly
+    assert np.allclose(out[[0, -1], :3], t[[0, -1], :3])  # the ends stay
+    assert after <= 3 * before  # no gap (the old end correction made it 3.6x)

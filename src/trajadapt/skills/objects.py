@@ -186,15 +186,30 @@ def pass_through(
         )
     k = nearest_index(t, target) if index is None else int(index) % len(t)
     s = progress(t)
-    ramp = smoothstep(s)
-    weight = np.exp(-0.5 * ((s - s[k]) / max(float(width) / 2.0, 1e-6)) ** 2)
+    weight = np.exp(-0.5 * ((s - s[k]) / _bend_sigma(t, target - t[k, :3], width)) ** 2)
+    # the start and the goal stay: a window that is 1 at k and falls smoothly to 0 at each end
+    # (subtracting the ends' weights instead, then dividing by the weight at k, blew a bend near an
+    # end up many times over)
+    before, after = s <= s[k], s > s[k]
+    window = np.ones_like(s)
     if k != 0:
-        weight = weight - (1.0 - ramp) * weight[0]  # the start stays
+        window[before] = smoothstep(s[before] / max(s[k], 1e-12))
     if k != len(t) - 1:
-        weight = weight - ramp * weight[-1]  # the goal stays
-    weight = weight / weight[k]
-    t[:, :3] += weight[:, None] * (target - t[k, :3])
+        window[after] = smoothstep((1.0 - s[after]) / max(1.0 - s[k], 1e-12))
+    t[:, :3] += (weight * window)[:, None] * (target - t[k, :3])
     return t
+
+
+def _bend_sigma(t: Array, offset: Array, width: float) -> float:
+    """The bend's spread (in progress): ``width / 2``, or wider when a narrow bend would make gaps.
+
+    A Gaussian bend of spread sigma moving a waypoint by |offset| stretches a step of the path by up
+    to about |offset| * step / (sigma * sqrt(e) * length); the spread is widened so that this stays
+    below the path's longest step (the longest step at most about doubles).
+    """
+    length = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).sum())
+    no_gaps = float(np.linalg.norm(offset)) / (float(np.sqrt(np.e)) * max(length, 1e-12))
+    return float(max(float(width) / 2.0, no_gaps, 1e-6))
 
 
 def reach(trajectory: TrajectoryArg, point: PointArg) -> Array:

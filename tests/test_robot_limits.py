@@ -185,3 +185,16 @@ def test_clearance_is_measured_from_an_objects_box_when_its_size_is_known() -> N
     projection = project(path, path, Scene((table,)), limits)
     assert not projection.remaining
     assert distance_to(projection.trajectory, table).min() >= 0.25 - 1e-6
+
+
+def test_the_projection_holds_the_ends_the_code_kept_unless_they_break_a_limit() -> None:
+    original = line(z=0.2)
+    rounder = original.copy()
+    rounder[:, 2] -= 0.5 * np.sin(np.linspace(0, np.pi, 40))  # dips below the floor in the middle
+    floor = Constraints(lower=(-5.0, -5.0, 0.0))
+    held = project(rounder, original, Scene(), floor).trajectory
+    assert np.array_equal(held[[0, -1], :3], original[[0, -1], :3]) and held[:, 2].min() >= -1e-6
+    below = original.copy()
+    below[:, 2] = -0.1  # the start itself breaks the floor: it may move
+    moved = project(below, original, Scene(), floor).trajectory
+    assert moved[:, 2].min() >= -1e-6

@@ -18,7 +18,7 @@ waypoints; the rest of the moved waypoints moved to keep the path smooth.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -65,6 +65,7 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     Raises:
         DependencyNotInstalled: osqp or scipy is missing.
     """
+    constraints = _holding_kept_ends(trajectory, original, scene, constraints)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
     compact = _project_distinct(trajectory[firsts], original, scene, constraints)
@@ -76,6 +77,30 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
     broken = new_violations(trajectory, original, scene, constraints)
     return Projection(projected, largest, remaining, constraint_moves(trajectory, projected, broken))
+
+
+def _holding_kept_ends(
+    trajectory: Array, original: Array, scene: Scene, constraints: Constraints
+) -> Constraints:
+    """Also hold the start / goal where the code left them (at the original's) and no limit is broken.
+
+    The smoothing would otherwise move an end nobody asked to move (a curve made rounder, then lifted
+    back above the floor, started 0.04 away from where it started).
+    """
+    broken = {
+        i % len(trajectory)
+        for v in find_violations(trajectory, original, scene, constraints)
+        for i in v.waypoints
+    }
+    tolerance = 1e-9 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
+    kept = [
+        float(np.linalg.norm(trajectory[index, :3] - original[index, :3])) <= tolerance
+        and index % len(trajectory) not in broken
+        for index in (0, -1)
+    ]
+    return replace(
+        constraints, keep_start=constraints.keep_start or kept[0], keep_goal=constraints.keep_goal or kept[1]
+    )
 
 
 def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:

@@ -94,3 +94,12 @@ def test_a_distance_step_in_a_speed_instruction_is_left_out_unless_asked(
     result, notes = leave_out_unasked(code, [instruction], ["box"])
     assert (step in result) == kept
     assert kept or "does not ask for a change of distance to an object" in notes[0]
+
+
+def test_increase_or_decrease_of_speed_is_not_a_distance_word() -> None:
+    code = (
+        "t = get_trajectory()\nt = move_away(t, detect_objects('rocker'))\n"
+        "t = scale_speed(t, 0.65, near=detect_objects('rocker'))\nmodified_trajectory = t"
+    )
+    kept, notes = leave_out_unasked(code, ["Decrease the speed near the rocker"], ["rocker"])
+    assert "move_away" not in kept and "a change of distance" in notes[0]

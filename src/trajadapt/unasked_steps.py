@@ -153,11 +153,6 @@ TOPICS = (
             "move to",
             "through",
             "far",
-            "bigger",
-            "smaller",
-            "wider",
-            "increas",
-            "decreas",
         ),
         only_with="a speed change",
     ),  # fmt: skip

@@ -21,3 +21,17 @@ def parse_code(source: str) -> ast.Module:
     """
     with _PARSE_LOCK:
         return ast.parse(source)
+
+
+def assigned_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
+    """The parsed line, its call and the called name, for a line ``name = function(...)``; else None."""
+    try:
+        tree = parse_code(line.strip())
+    except SyntaxError:
+        return None
+    if len(tree.body) != 1 or not isinstance(tree.body[0], ast.Assign):
+        return None
+    call = tree.body[0].value
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Name):
+        return tree, call, call.func.id
+    return None

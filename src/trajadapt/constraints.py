@@ -20,6 +20,7 @@ import numpy as np
 
 from trajadapt.geometry import Array
 from trajadapt.scene import Scene, SceneObject, name_key
+from trajadapt.wording import CLAUSE_BREAKS, names_in
 
 _T = TypeVar("_T")
 
@@ -156,7 +157,6 @@ APPROACH_WORDS = re.compile(
     re.I,
 )
 AWAY_WORDS = re.compile(r"\b(?:away|avoid\w*|far\w*|clear of|distance from|keep off)\b", re.I)
-CLAUSE_BREAKS = re.compile(r"[,.;!?]|\b(?:and|then|but|while)\b", re.I)
 
 
 def approached_objects(instruction: str, names: Sequence[str]) -> tuple[str, ...]:
@@ -171,8 +171,7 @@ def approached_objects(instruction: str, names: Sequence[str]) -> tuple[str, ...
     for clause in CLAUSE_BREAKS.split(instruction):
         if not APPROACH_WORDS.search(clause) or AWAY_WORDS.search(clause):
             continue
-        words = f" {' '.join(re.findall(r'[a-z0-9]+', clause.casefold()))} "
-        found += [n for n in names if f" {' '.join(re.findall(r'[a-z0-9]+', n.casefold()))} " in words]
+        found += names_in(clause, names)
     return tuple(dict.fromkeys(found))
 
 

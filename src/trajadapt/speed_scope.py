@@ -15,15 +15,17 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import parse_code
+from trajadapt.code_parse import assigned_call
+from trajadapt.wording import SPEED_WORDS, names_in
 
 SPEED_STEPS = ("scale_speed", "set_speed")
-SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
 PLACE_WORDS = re.compile(
     r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
     r"|approach\w*|by the|when|while|as you)\b",
     re.I,
 )
+# unlike wording.CLAUSE_BREAKS, "while" stays inside a clause: in "faster while passing the X" it
+# says where the speed changes
 CLAUSES = re.compile(r"[,.;!?]|\b(?:and|then|but|also)\b", re.I)
 
 
@@ -32,8 +34,7 @@ def scoped_object(words: str, names: Iterable[str]) -> str | None:
     speed_clauses = [c for c in CLAUSES.split(words) if SPEED_WORDS.search(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
-    clause = f" {' '.join(re.findall(r'[a-z0-9]+', speed_clauses[0].casefold()))} "
-    named = [n for n in names if n and f" {' '.join(re.findall(r'[a-z0-9]+', n.casefold()))} " in clause]
+    named = names_in(speed_clauses[0], names)
     longest = [
         n for n in named if not any(n != other and n.casefold() in other.casefold() for other in named)
     ]
@@ -61,15 +62,10 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
 
 def _unplaced_speed_call(line: str) -> tuple[ast.Module, ast.Call] | None:
     """The parsed line and its call for ``t = scale_speed(t, x)`` or ``set_speed`` with no place."""
-    try:
-        tree = parse_code(line.strip())
-    except SyntaxError:
+    found = assigned_call(line)
+    if found is None or found[2] not in SPEED_STEPS:
         return None
-    if len(tree.body) != 1 or not isinstance(tree.body[0], ast.Assign):
-        return None
-    call = tree.body[0].value
-    if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id in SPEED_STEPS):
-        return None
+    tree, call, _ = found
     if len(call.args) > 2 or any(k.arg in ("near", "radius", "part") for k in call.keywords):
         return None
     return tree, call

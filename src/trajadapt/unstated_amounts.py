@@ -19,10 +19,11 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.answer_grammar import skill_parameters
-from trajadapt.code_parse import parse_code
+from trajadapt.code_parse import assigned_call
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 from trajadapt.skills.speed import SPEED_FACTORS
+from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
@@ -55,18 +56,14 @@ def is_stated(value: float, numbers: list[float]) -> bool:
 
 def is_stated_factor(value: float, numbers: list[float]) -> bool:
     """Whether a speed factor comes from the user's numbers: n, 1/n, or 1 +- n% ('20% faster')."""
-    candidates = [n for n in numbers] + [1 / n for n in numbers if n] + [1 + n / 100 for n in numbers]
+    candidates = list(numbers) + [1 / n for n in numbers if n] + [1 + n / 100 for n in numbers]
     candidates += [1 - n / 100 for n in numbers if n < 100]
     return any(abs(value - c) <= 1e-6 * max(1.0, c) for c in candidates)
 
 
-SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
-CLAUSES = re.compile(r"[,.;!?]|\b(?:and|then|but|while)\b", re.I)
-
-
 def speed_factor(words: str, faster: bool) -> float:
     """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
-    clause = next((c for c in CLAUSES.split(words) if SPEED_WORDS.search(c)), "")
+    clause = next((c for c in CLAUSE_BREAKS.split(words) if SPEED_WORDS.search(c)), "")
     word = intensity_word(clause)
     strength = AMOUNT_WORDS.get(word or "", AMOUNT_WORDS["default"])
     size = (
@@ -101,16 +98,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
 
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
     """The parsed line, its skill call and the skill's name, for a line ``name = skill(...)``."""
-    try:
-        tree = parse_code(line.strip())
-    except SyntaxError:
-        return None
-    if len(tree.body) != 1 or not isinstance(tree.body[0], ast.Assign):
-        return None
-    call = tree.body[0].value
-    if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.func.id in BY_NAME:
-        return tree, call, call.func.id
-    return None
+    found = assigned_call(line)
+    return found if found is not None and found[2] in BY_NAME else None
 
 
 def _made_up_height(line: str, numbers: list[float]) -> bool:

@@ -1,0 +1,31 @@
+"""How the user's words are read without a model: clauses, speed words, object names as whole words.
+
+The clearance's exemptions (``constraints.approached_objects``), the calibrated speed factors
+(``unstated_amounts``) and the placing of speed steps (``speed_scope``) read instructions the same way.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+CLAUSE_BREAKS = re.compile(r"[,.;!?]|\b(?:and|then|but|while)\b", re.I)
+"""Where one clause of an instruction ends and the next begins."""
+
+SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
+"""Word stems that make a clause about speed."""
+
+
+def whole_words(text: str) -> str:
+    """Lower-case words with a space on each side, so that names match whole words only.
+
+    >>> whole_words("the Red-Box!")
+    ' the red box '
+    """
+    return f" {' '.join(re.findall(r'[a-z0-9]+', text.casefold()))} "
+
+
+def names_in(text: str, names: Iterable[str]) -> list[str]:
+    """The names that ``text`` contains as whole words, in the order of ``names``."""
+    words = whole_words(text)
+    return [name for name in names if name and whole_words(name) in words]

@@ -7,7 +7,9 @@ import socket
 import threading
 import time
 from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 import pytest
 import uvicorn
@@ -20,6 +22,21 @@ CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
                  "--disable-component-update", "--disable-sync"]  # fmt: skip
 SCREENSHOT = REPO_ROOT / "docs" / "images" / "review-page.png"
+
+
+@contextmanager
+def chromium_page(url: str) -> Iterator[Any]:
+    """The review page at ``url`` in headless Chromium (1280 x 900); the browser is closed after."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            page.goto(url)
+            yield page
+        finally:
+            browser.close()
 
 
 @pytest.fixture
@@ -44,12 +61,9 @@ def server_url(tmp_path: Path) -> Iterator[str]:
 
 
 def test_review_loop_in_chromium(server_url: str, tmp_path: Path) -> None:
-    from playwright.sync_api import expect, sync_playwright
+    from playwright.sync_api import expect
 
-    with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        page = browser.new_page(viewport={"width": 1280, "height": 900})
-        page.goto(server_url)
+    with chromium_page(server_url) as page:
         page.select_option("#case-list", "line.json")
         expect(page.locator("#case-name")).to_contain_text("11 waypoints")
         page.fill("#instruction", "go left")
@@ -73,30 +87,22 @@ def test_review_loop_in_chromium(server_url: str, tmp_path: Path) -> None:
         expect(page.locator("#error")).to_be_hidden()
         SCREENSHOT.parent.mkdir(parents=True, exist_ok=True)
         page.screenshot(path=str(SCREENSHOT), full_page=True)
-        browser.close()
 
 
 def test_errors_show_on_the_page(server_url: str) -> None:
-    from playwright.sync_api import expect, sync_playwright
+    from playwright.sync_api import expect
 
-    with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        page = browser.new_page()
-        page.goto(server_url)
+    with chromium_page(server_url) as page:
         page.set_input_files("#case-file", files=[{"name": "bad.json", "mimeType": "application/json",
                                                   "buffer": b"{not json"}])  # fmt: skip
         expect(page.locator("#error")).to_contain_text("the file is not JSON")
         expect(page.locator("#error")).not_to_contain_text("Traceback")
-        browser.close()
 
 
 def test_limits_toggle_explanation_and_effect_in_chromium(server_url: str) -> None:
-    from playwright.sync_api import expect, sync_playwright
+    from playwright.sync_api import expect
 
-    with sync_playwright() as playwright:
-        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True)
-        page = browser.new_page(viewport={"width": 1280, "height": 900})
-        page.goto(server_url)
+    with chromium_page(server_url) as page:
         page.select_option("#case-list", "line.json")
         expect(page.locator("#case-name")).to_contain_text("11 waypoints")
         page.click("#limits summary")
@@ -118,4 +124,3 @@ def test_limits_toggle_explanation_and_effect_in_chromium(server_url: str) -> No
         x = page.evaluate("document.getElementById('plot').data.find(t => t.name === 'proposed').x")
         assert max(x) <= 0.35 + 1e-9 and x[0] == 0  # 0.1 then 0.3 more would be 0.4: the box holds it
         expect(page.locator("#error")).to_be_hidden()
-        browser.close()

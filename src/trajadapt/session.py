@@ -27,6 +27,7 @@ from trajadapt.errors import (
     SessionStateError,
 )
 from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
+from trajadapt.part_scope import scope_to_parts
 from trajadapt.projection import project
 from trajadapt.prompts import first_messages, render
 from trajadapt.review import ReviewNote, review_notes, validate_result
@@ -471,8 +472,9 @@ class AdaptationSession:
         names = [obj.name for obj in self.case.scene.objects]
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
+        code, scoped = scope_to_parts(code, self._asked)
         code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + placed
+        self._left_out = left_out + replaced + scoped + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

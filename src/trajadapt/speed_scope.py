@@ -16,7 +16,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call
-from trajadapt.wording import SPEED_WORDS, names_in
+from trajadapt.wording import SENTENCE_MARKS, SPEED_WORDS, names_in
 
 SPEED_STEPS = ("scale_speed", "set_speed")
 PLACE_WORDS = re.compile(
@@ -26,7 +26,7 @@ PLACE_WORDS = re.compile(
 )
 # unlike wording.CLAUSE_BREAKS, "while" stays inside a clause: in "faster while passing the X" it
 # says where the speed changes
-CLAUSES = re.compile(r"[,.;!?]|\b(?:and|then|but|also)\b", re.I)
+CLAUSES = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|also)\b", re.I)
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:

@@ -9,7 +9,10 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-CLAUSE_BREAKS = re.compile(r"[,.;!?]|\b(?:and|then|but|while)\b", re.I)
+SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
+"""Punctuation that ends a clause; the point of a decimal number ("by 0.2") does not."""
+
+CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I)
 """Where one clause of an instruction ends and the next begins."""
 
 SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)

@@ -1,0 +1,193 @@
+"""A move the user's words place on one part of the path, written for all of it: moved to that part.
+
+A small model writes ``shift(t, 'left')`` for "shift the starting position to the left" (the whole
+path moves, the start stays), ``shift_goal(t, 'back', 1.5)`` or ``move_closer(t,
+detect_objects('goal'))`` for "move backwards by 1.5 after reaching the goal position" (the path
+never goes past its goal), and ``move_away(t, detect_objects('goal'))`` for "the goal position a
+little downwards". Each clause of the user's words (split as ``wording.CLAUSE_BREAKS`` splits them)
+that names one part of the path and one direction asks for a move of that part:
+
+- the start ("the start", "starting position", "initial point", "beginning") -> ``shift_start``;
+- the goal ("the goal", "goal position", "end point", "final position", "destination") ->
+  ``shift_goal``, unless the clause keeps it ("keeping the goal the same");
+- past the goal ("after reaching the goal", "beyond the end", "once at the destination") ->
+  ``extend`` (also with no direction when the clause says "further", "more", "continue": along the
+  final heading), unless the code already goes on past the goal;
+- the first N waypoints ("first 6 points") -> ``shift_part(..., part=(0, N))``.
+
+The one step written for it is replaced: a whole-path ``shift`` in that direction (or, past the
+goal, a ``shift_goal``), else a ``move_closer``/``move_away`` to the path's own start or goal (a
+landmark, not a place to approach). The step keeps its amount; a landmark step takes the clause's
+number or vague word. Nothing else changes, and a review note says what was replaced and why.
+Measured on stored answers in docs/benchmarks.md.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.code_parse import assigned_call
+from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
+from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
+from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS
+
+AFTER_GOAL = re.compile(
+    r"\b(?:after|past|beyond|once)\b(?:\s+\w+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)\b", re.I
+)
+START = re.compile(
+    r"\b(?:the\s+(?:start|beginning)\b|start(?:ing)?\s+(?:position|point|waypoint|pose|location)"
+    r"|initial\s+(?:position|point|waypoint|pose|location)|beginning)",
+    re.I,
+)
+GOAL = re.compile(
+    r"\b(?:the\s+goal\b|goal\s+(?:position|point|pose|location)|end(?:ing)?\s+(?:position|point|pose|location)"
+    r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
+    re.I,
+)
+FIRST_COUNT = re.compile(r"\bfirst\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
+KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
+FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|keep going|onward\w*)\b", re.I)
+AMOUNT_NUMBER = re.compile(r"\b(?:by|for|of)\s+((?:\d+\.?\d*|\.\d+))\b", re.I)
+
+SHIFTS = ("shift", "shift_goal")
+LANDMARK_STEPS = ("move_closer", "move_away")
+LANDMARKS = {name.casefold() for name in START_NAMES + GOAL_NAMES}
+
+
+@dataclass(frozen=True)
+class PartMove:
+    """What one clause asks: a part of the path moved in a direction (None: along the final heading)."""
+
+    part: str  # 'the start', 'the goal', 'past the goal' or 'the first N waypoints'
+    direction: str | None
+    amount: float | str | None
+    count: int = 0  # for 'first N waypoints'
+
+    def call(self, amount: ast.expr | None) -> str:
+        """The skill call that makes this move, given the amount the code wrote (None: the clause's own)."""
+        given = ast.unparse(amount) if amount is not None else None
+        if given is None and self.amount is not None:
+            given = repr(self.amount)
+        if self.part == "past the goal":
+            arguments = [given or "None", repr(self.direction)] if self.direction else [given]
+        else:
+            arguments = [repr(self.direction), given]
+        words = ", ".join(["t", *(a for a in arguments if a is not None)])
+        if self.count:
+            return f"shift_part({words}, part=(0, {self.count}))"
+        skill = {"the start": "shift_start", "the goal": "shift_goal"}.get(self.part, "extend")
+        return f"{skill}({words})"
+
+
+def part_moves(words: str) -> list[PartMove]:
+    """The part moves the clauses of ``words`` ask for (see the module docstring)."""
+    moves = []
+    for clause in CLAUSE_BREAKS.split(words):
+        move = _clause_move(clause)
+        if move is not None:
+            moves.append(move)
+    return moves
+
+
+def _clause_move(clause: str) -> PartMove | None:
+    directions = {
+        DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in DIRECTION_SYNONYMS
+    }
+    if len(directions) > 1 or SPEED_WORDS.search(clause):
+        return None
+    direction = next(iter(directions), None)
+    amount = _clause_amount(clause)
+    if AFTER_GOAL.search(clause):
+        if direction is None and not FURTHER.search(clause):
+            return None
+        return PartMove("past the goal", direction, amount)
+    if direction is None or KEEPS.search(clause):
+        return None
+    count = _first_count(clause)
+    parts = [
+        p for p, found in (("the start", START.search(clause)), ("the goal", GOAL.search(clause))) if found
+    ]
+    if count:
+        parts.append(f"the first {count} waypoints")
+    if len(parts) != 1:
+        return None
+    return PartMove(parts[0], direction, amount, count)
+
+
+def _clause_amount(clause: str) -> float | str | None:
+    number = AMOUNT_NUMBER.search(clause)
+    return float(number.group(1)) if number else intensity_word(clause)
+
+
+def _first_count(clause: str) -> int:
+    found = FIRST_COUNT.search(clause)
+    if found is None:
+        return 0
+    word = found.group(1).lower()
+    value = float(word) if word.isdigit() else NUMBER_WORDS.get(word, 0.0)
+    return int(value) if value >= 1 and value == int(value) else 0
+
+
+def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with the one step written for each part move replaced by that move, and a note each."""
+    lines, notes = code.splitlines(), []
+    for move in part_moves(" ".join(asked)):
+        if move.part == "past the goal" and any(
+            _skill(line) in ("extend", "append_segment") for line in lines
+        ):
+            continue
+        index, amount = _step_for(move, lines)
+        if index is None:
+            continue
+        before = lines[index].strip()
+        after = f"t = {move.call(amount)}"
+        lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
+        notes.append(f"`{before}` -> `{after}`: the instruction moves {move.part}, not the whole path")
+    return "\n".join(lines), notes
+
+
+def _step_for(move: PartMove, lines: list[str]) -> tuple[int | None, ast.expr | None]:
+    """The line written for ``move`` and the amount it gave, or (None, None) when none or several."""
+    shifts = SHIFTS if move.part == "past the goal" else SHIFTS[:1]
+    written = [(i, call) for i, call in _calls(lines, shifts) if _direction(call) == move.direction]
+    if not written:
+        written = [(i, call) for i, call in _calls(lines, LANDMARK_STEPS) if _on_landmark(call)]
+        return (written[0][0], None) if len(written) == 1 else (None, None)
+    if len(written) != 1:
+        return None, None
+    index, call = written[0]
+    return index, call.args[2] if len(call.args) > 2 else None
+
+
+def _calls(lines: list[str], skills: tuple[str, ...]) -> list[tuple[int, ast.Call]]:
+    found = [(i, assigned_call(line)) for i, line in enumerate(lines)]
+    return [(i, f[1]) for i, f in found if f is not None and f[2] in skills]
+
+
+def _skill(line: str) -> str | None:
+    found = assigned_call(line)
+    return found[2] if found is not None else None
+
+
+def _direction(call: ast.Call) -> str | None:
+    if len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
+        return None
+    return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
+
+
+def _on_landmark(call: ast.Call) -> bool:
+    """Whether the call's point is ``detect_objects('<the path's start or goal>')``."""
+    if len(call.args) < 2 or not isinstance(call.args[1], ast.Call):
+        return False
+    detect = call.args[1]
+    return (
+        isinstance(detect.func, ast.Name)
+        and detect.func.id == "detect_objects"
+        and len(detect.args) == 1
+        and isinstance(detect.args[0], ast.Constant)
+        and str(detect.args[0].value).casefold() in LANDMARKS
+    )

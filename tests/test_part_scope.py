@@ -1,0 +1,85 @@
+"""A move the words place on a part of the path (start, goal, past the goal, first N waypoints)."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.part_scope import PartMove, part_moves, scope_to_parts
+
+CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("words", "move"),
+    [
+        ("move the start point a bit to the right", PartMove("the start", "right", "a bit")),
+        ("move the initial position up by 0.3", PartMove("the start", "up", 0.3)),
+        ("put the end position further back", PartMove("the goal", "back", None)),
+        ("after arriving at the goal go up by 2.5", PartMove("past the goal", "up", 2.5)),
+        ("keep going further once you reach the destination", PartMove("past the goal", None, None)),
+        ("shift the first 8 waypoints downwards", PartMove("the first 8 waypoints", "down", None, 8)),
+        ("push the first five points left", PartMove("the first 5 waypoints", "left", None, 5)),
+    ],
+)
+def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(
+    words: str, move: PartMove
+) -> None:
+    assert part_moves(words) == [move]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "go left keeping the goal position where it is",  # the goal is kept, the path moves
+        "slow down before the goal position",  # about speed
+        "go left and reach the goal",  # the direction's clause names no part
+        "start going up by 0.2",  # 'start' as a verb
+        "lower the speed near the end point",
+        "shift the start point up-left",  # two directions: which part moves where?
+    ],
+)
+def test_clauses_that_keep_a_part_or_say_no_move_of_it_ask_nothing(words: str) -> None:
+    assert part_moves(words) == []
+
+
+def test_a_whole_path_shift_becomes_a_shift_of_the_start_and_keeps_its_amount() -> None:
+    code, notes = scope_to_parts(
+        CODE.format(step="t = shift(t, 'front', 0.4)"), ["nudge the starting position forward by 0.4"]
+    )
+    assert "t = shift_start(t, 'front', 0.4)" in code.splitlines()
+    assert "moves the start, not the whole path" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        ("t = shift_goal(t, 'left', 0.5)", "drive left by 0.5 after the goal", "t = extend(t, 0.5, 'left')"),
+        ("t = move_closer(t, detect_objects('goal'))", "after reaching the goal go up by 1", "t = extend(t, 1.0, 'up')"),
+        ("t = move_away(t, detect_objects('goal'))", "continue further past the goal", "t = extend(t)"),
+        ("t = move_away(t, detect_objects('goal'), 'a bit')", "the goal point a little lower", "t = shift_goal(t, 'down', 'a little')"),
+        ("t = shift(t, 'down')", "the first 4 waypoints go lower", "t = shift_part(t, 'down', part=(0, 4))"),
+    ],
+)  # fmt: skip
+def test_the_step_written_for_the_part_is_replaced(step: str, words: str, expected: str) -> None:
+    code, notes = scope_to_parts(CODE.format(step=step), [words])
+    assert expected in code.splitlines() and len(notes) == 1
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        (
+            "t = shift(t, 'left')\nt = extend(t, 0.2, 'left')",
+            "go left by 0.2 after the goal",
+        ),  # already goes on
+        ("t = shift(t, 'left')\nt = shift(t, 'left', 0.1)", "shift the start to the left"),  # which one?
+        ("t = shift(t, 'up')", "shift the start to the left"),  # no step in that direction
+        (
+            "t = move_closer(t, detect_objects('box'))",
+            "move the goal position left",
+        ),  # an object, not a landmark
+    ],
+)
+def test_steps_that_already_do_it_or_are_ambiguous_stay(step: str, words: str) -> None:
+    code = CODE.format(step=step)
+    assert scope_to_parts(code, [words]) == (code, [])

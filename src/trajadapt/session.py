@@ -27,6 +27,7 @@ from trajadapt.errors import (
     SessionStateError,
 )
 from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
+from trajadapt.object_asks import replace_object_steps
 from trajadapt.part_scope import scope_to_parts
 from trajadapt.projection import project
 from trajadapt.prompts import first_messages, render
@@ -473,8 +474,9 @@ class AdaptationSession:
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
         code, scoped = scope_to_parts(code, self._asked)
+        code, reread = replace_object_steps(code, self._asked, names)
         code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + scoped + placed
+        self._left_out = left_out + replaced + scoped + reread + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

@@ -1,0 +1,210 @@
+"""What the user's words ask about each object, and a step on it that does something else, replaced.
+
+A small model reaches for ``avoid`` whatever the words say about an object: ``avoid(t,
+detect_objects('chair'), 0.3)`` for "keeping a smaller distance from the chair", ``avoid(t,
+detect_objects('paddle'), 0.2)`` for "go slower if paddle is within 0.2", ``avoid(t,
+detect_objects('bottle'), 0.5)`` for "do not go left of the bottle". Each clause of the user's words
+(split at punctuation, "and", "then", "but", "also"; "while" stays inside) that names exactly one of
+the scene's objects asks one thing of it:
+
+- a speed change near it ("slower", "faster", ... with a place word: "near", "within 0.2 of", "if
+  X is within"), when the code changes no speed anywhere: the one distance step on that object
+  becomes ``scale_speed(t, <calibrated factor>, near=X)`` (with ``radius=`` when the clause says
+  "within <number>"); in an ``avoid`` of several objects, the object leaves the list and the speed
+  step follows it;
+- a side ("do not go left of X" -> the right side, "stay to the right of X") -> ``keep_side``;
+- closer ("closer", "nearer", "a smaller distance", "approach") or away ("further", "away", "a
+  greater distance") -> an ``avoid`` of that one object with a clearance the clause does not state
+  becomes ``move_closer`` / ``move_away`` with the clause's vague word.
+
+An object that two clauses ask different things of is left alone, and so is every step the words
+agree with. A review note says what was replaced and why. Measured on stored answers in
+docs/benchmarks.md.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.code_parse import assigned_call, parse_code
+from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
+from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
+from trajadapt.wording import SPEED_WORDS, names_in
+
+CLOSER = re.compile(
+    r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
+)
+AWAY = re.compile(
+    r"\b(?:away|further|farther|(?:greater|larger|bigger|more|increased?|wider) (?:distance|berth|space))\b",
+    re.I,
+)
+FASTER = re.compile(
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed up)\b", re.I
+)
+SLOWER = re.compile(r"\b(?:slow\w*|decelerat\w*|leisure\w*)\b", re.I)
+NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
+KEEP_SIDE = re.compile(
+    r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
+)
+WITHIN = re.compile(r"\bwithin\s+((?:\d+\.?\d*|\.\d+))", re.I)
+OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "up": "down", "down": "up"}
+DISTANCE_STEPS = ("avoid", "move_away", "move_closer")
+SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
+
+
+@dataclass(frozen=True)
+class ObjectAsk:
+    """What one clause asks of one object: 'faster', 'slower', 'closer', 'away' or 'side'."""
+
+    name: str
+    relation: str
+    clause: str
+    side: str = ""  # for 'side': the side to keep to
+    radius: float | None = None  # for a speed change: "within 0.2"
+
+
+def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
+    """The one thing the clauses of ``words`` ask of each object they name (none where two clauses differ)."""
+    asks: dict[str, list[ObjectAsk]] = {}
+    for clause in CLAUSES.split(words):
+        named = _longest(names_in(clause, names))
+        ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
+        if ask is not None:
+            asks.setdefault(ask.name, []).append(ask)
+    return {name: found[0] for name, found in asks.items() if len({a.relation for a in found}) == 1}
+
+
+def _longest(named: list[str]) -> list[str]:
+    return [n for n in named if not any(n != o and n.casefold() in o.casefold() for o in named)]
+
+
+def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
+    side = _side(clause.replace(name, " "))
+    if side:
+        return ObjectAsk(name, "side", clause, side=side)
+    if SPEED_WORDS.search(clause) or FASTER.search(clause) or SLOWER.search(clause):
+        if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
+            return None
+        within = WITHIN.search(clause)
+        radius = float(within.group(1)) if within else None
+        return ObjectAsk(name, "faster" if FASTER.search(clause) else "slower", clause, radius=radius)
+    closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
+    if closer == away:
+        return None
+    return ObjectAsk(name, "closer" if closer else "away", clause)
+
+
+def _side(clause: str) -> str:
+    for pattern, flip in ((NOT_SIDE, True), (KEEP_SIDE, False)):
+        found = pattern.search(clause)
+        word = DIRECTION_SYNONYMS.get(found.group(1).lower(), "") if found else ""
+        if word:
+            return OPPOSITE[word] if flip else word
+    return ""
+
+
+def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with each step on an object that does not do what the words ask of it replaced, noted."""
+    asks = object_asks(" ".join(asked), list(names))
+    lines, notes = code.splitlines(), []
+    changes_speed = any(_call_of(line, SPEED_STEPS) is not None for line in lines)
+    for ask in asks.values():
+        if ask.relation in ("faster", "slower") and changes_speed:
+            continue
+        steps = [i for i, line in enumerate(lines) if _on_object(_call_of(line, DISTANCE_STEPS), ask.name)]
+        if len(steps) != 1 or (ask.relation == "side" and any(_call_of(x, ("keep_side",)) for x in lines)):
+            continue
+        replaced = _replacement(lines[steps[0]], ask)
+        if replaced is None:
+            continue
+        indent = lines[steps[0]][: len(lines[steps[0]]) - len(lines[steps[0]].lstrip())]
+        notes.append(f"`{lines[steps[0]].strip()}` -> `{'; '.join(replaced)}`: the instruction asks "
+                     f"{_asked_words(ask)} {ask.name}")  # fmt: skip
+        lines[steps[0] : steps[0] + 1] = [indent + line for line in replaced]
+    return "\n".join(lines), notes
+
+
+def _asked_words(ask: ObjectAsk) -> str:
+    return {
+        "faster": "for a faster pace near",
+        "slower": "for a slower pace near",
+        "side": f"to stay {ask.side} of",
+        "closer": "to come closer to",
+        "away": "to keep further from",
+    }[ask.relation]
+
+
+def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
+    """The lines that replace ``line`` (a distance step on ``ask.name``), or None to keep it."""
+    _, call, skill = assigned_call(line)  # type: ignore[misc]
+    point = f"detect_objects({ask.name!r})"
+    if ask.relation in ("faster", "slower"):
+        factor = speed_factor(ask.clause, faster=ask.relation == "faster")
+        radius = f", radius={ask.radius}" if ask.radius is not None else ""
+        speed = f"t = scale_speed(t, {factor}, near={point}{radius})"
+        rest = _without_object(call, ask.name) if skill == "avoid" else None
+        return [speed] if rest is None else [rest, speed]
+    if ask.relation == "side":
+        return [f"t = keep_side(t, {ask.side!r}, {point})"]
+    if skill != "avoid" or len(_objects(call)) != 1 or _clearance_stated(call, ask.clause):
+        return None
+    word = intensity_word(ask.clause)
+    amount = f", {word!r}" if word else ""
+    return [f"t = {'move_closer' if ask.relation == 'closer' else 'move_away'}(t, {point}{amount})"]
+
+
+def _call_of(line: str, skills: tuple[str, ...]) -> ast.Call | None:
+    found = assigned_call(line)
+    return found[1] if found is not None and found[2] in skills else None
+
+
+def _objects(call: ast.Call | None) -> list[str]:
+    """The object names of the call's point argument: one ``detect_objects`` or a list of them."""
+    if call is None or len(call.args) < 2:
+        return []
+    point = call.args[1]
+    items = point.elts if isinstance(point, ast.List | ast.Tuple) else [point]
+    return [_detected(item) or "" for item in items]
+
+
+def _detected(node: ast.expr) -> str | None:
+    if (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id == "detect_objects"
+        and len(node.args) == 1
+        and isinstance(node.args[0], ast.Constant)
+    ):
+        return str(node.args[0].value)
+    return None
+
+
+def _on_object(call: ast.Call | None, name: str) -> bool:
+    return any(found.casefold() == name.casefold() for found in _objects(call))
+
+
+def _without_object(call: ast.Call, name: str) -> str | None:
+    """``t = avoid(t, <the other objects>, ...)`` when the avoid names others too; None when only ``name``."""
+    others = [n for n in _objects(call) if n.casefold() != name.casefold()]
+    if not others:
+        return None
+    points = [_expression(f"detect_objects({n!r})") for n in others]
+    call.args[1] = points[0] if len(points) == 1 else ast.List(points, ast.Load())
+    return f"t = {ast.unparse(call)}"
+
+
+def _expression(source: str) -> ast.expr:
+    statement = parse_code(source).body[0]
+    assert isinstance(statement, ast.Expr)
+    return statement.value
+
+
+def _clearance_stated(call: ast.Call, clause: str) -> bool:
+    clearance = call.args[2] if len(call.args) > 2 else next((k.value for k in call.keywords), None)
+    if not isinstance(clearance, ast.Constant) or not isinstance(clearance.value, int | float):
+        return True
+    return is_stated(float(clearance.value), stated_numbers(clause))

@@ -1,0 +1,99 @@
+"""What the words ask of each object, and a step on it that does something else, replaced."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.object_asks import object_asks, replace_object_steps
+
+NAMES = ["Lamp", "red box", "box", "sofa"]
+CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("words", "name", "relation", "extra"),
+    [
+        ("hurry up whenever the lamp is within 0.4", "Lamp", "faster", 0.4),
+        ("take it slowly near the red box", "red box", "slower", None),  # the longest name
+        ("never pass to the left of the sofa", "sofa", "side", "right"),
+        ("stay to the front of the box", "box", "side", "front"),
+        ("keep a smaller distance to the sofa", "sofa", "closer", None),
+        ("give the lamp a wider berth", "Lamp", "away", None),
+    ],
+)
+def test_each_clause_asks_one_thing_of_the_one_object_it_names(
+    words: str, name: str, relation: str, extra: object
+) -> None:
+    ask = object_asks(words, NAMES)[name]
+    assert ask.relation == relation
+    assert (ask.radius if relation in ("faster", "slower") else ask.side or None) == extra
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "move closer to the sofa and then further from the sofa",  # two different asks
+        "go closer to the lamp or the sofa",  # two objects in one clause
+        "go faster with the box",  # a speed word without a place
+    ],
+)
+def test_unclear_asks_are_left_out(words: str) -> None:
+    assert object_asks(words, NAMES) == {}
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        (
+            "t = avoid(t, detect_objects('lamp'), 0.3)",
+            "move slower when the lamp is within 0.3",
+            ["t = scale_speed(t, 0.65, near=detect_objects('Lamp'), radius=0.3)"],
+        ),
+        (
+            "t = avoid(t, [detect_objects('lamp'), detect_objects('sofa')], 0.3)",
+            "speed up a lot near the lamp",
+            [
+                "t = avoid(t, detect_objects('sofa'), 0.3)",
+                "t = scale_speed(t, 1.6, near=detect_objects('Lamp'))",
+            ],
+        ),
+        (
+            "t = avoid(t, detect_objects('sofa'), 0.5)",
+            "do not drive right of the sofa",
+            ["t = keep_side(t, 'left', detect_objects('sofa'))"],
+        ),
+        (
+            "t = avoid(t, detect_objects('sofa'), 0.5)",
+            "pass at a slightly smaller distance from the sofa",
+            ["t = move_closer(t, detect_objects('sofa'), 'slightly')"],
+        ),
+        (
+            "t = avoid(t, detect_objects('sofa'), 0.5)",
+            "walk a lot further from the sofa",
+            ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
+        ),
+    ],
+)
+def test_a_step_that_does_something_else_is_replaced_with_a_note(
+    step: str, words: str, expected: list[str]
+) -> None:
+    code, notes = replace_object_steps(CODE.format(step=step), [words], NAMES)
+    assert code.splitlines()[1:-1] == expected
+    assert len(notes) == 1
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        (
+            "t = avoid(t, detect_objects('sofa'), 0.5)",
+            "stay further than 0.5 from the sofa",
+        ),  # stated clearance
+        ("t = move_away(t, detect_objects('sofa'))", "walk further from the sofa"),  # already right
+        ("t = avoid(t, detect_objects('lamp'), 0.2)\nt = scale_speed(t, 0.5)", "go slower near the lamp"),
+        ("t = shift(t, 'left')", "go slower near the lamp"),  # no step on the object to replace
+    ],
+)
+def test_steps_the_words_agree_with_stay(step: str, words: str) -> None:
+    code = CODE.format(step=step)
+    assert replace_object_steps(code, [words], NAMES) == (code, [])

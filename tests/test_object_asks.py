@@ -68,6 +68,16 @@ def test_unclear_asks_are_left_out(words: str) -> None:
             ["t = move_closer(t, detect_objects('sofa'), 'slightly')"],
         ),
         (
+            "t = move_away(t, detect_objects('sofa'), 'a lot')",
+            "pass a lot closer to the sofa",
+            ["t = move_closer(t, detect_objects('sofa'), 'a lot')"],
+        ),
+        (
+            "t = keep_side(t, 'front', detect_objects('sofa'))",
+            "stay on the front part a bit",
+            ["t = shift(t, 'front', 'a bit')"],
+        ),
+        (
             "t = avoid(t, detect_objects('sofa'), 0.5)",
             "walk a lot further from the sofa",
             ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
@@ -92,6 +102,7 @@ def test_a_step_that_does_something_else_is_replaced_with_a_note(
         ("t = move_away(t, detect_objects('sofa'))", "walk further from the sofa"),  # already right
         ("t = avoid(t, detect_objects('lamp'), 0.2)\nt = scale_speed(t, 0.5)", "go slower near the lamp"),
         ("t = shift(t, 'left')", "go slower near the lamp"),  # no step on the object to replace
+        ("t = keep_side(t, 'left', detect_objects('sofa'))", "stay left of the sofa"),  # names it
     ],
 )
 def test_steps_the_words_agree_with_stay(step: str, words: str) -> None:

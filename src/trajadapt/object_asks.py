@@ -14,8 +14,13 @@ the scene's objects asks one thing of it:
   step follows it;
 - a side ("do not go left of X" -> the right side, "stay to the right of X") -> ``keep_side``;
 - closer ("closer", "nearer", "a smaller distance", "approach") or away ("further", "away", "a
-  greater distance") -> an ``avoid`` of that one object with a clearance the clause does not state
-  becomes ``move_closer`` / ``move_away`` with the clause's vague word.
+  greater distance") -> a step the other way (``move_away`` for closer, ``move_closer`` for away),
+  or an ``avoid`` of that one object with a clearance the clause does not state, becomes
+  ``move_closer`` / ``move_away`` with the clause's vague word.
+
+When the words name no object at all, a side is a side of the scene ("stay on the left", "stay on
+the front part"): a ``keep_side`` about an object the user never named becomes a ``shift`` to that
+side with the clause's vague word.
 
 An object that two clauses ask different things of is left alone, and so is every step the words
 agree with. A review note says what was replaced and why. Measured on stored answers in
@@ -109,7 +114,8 @@ def _side(clause: str) -> str:
 
 def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with each step on an object that does not do what the words ask of it replaced, noted."""
-    asks = object_asks(" ".join(asked), list(names))
+    words, names = " ".join(asked), list(names)
+    asks = object_asks(words, names)
     lines, notes = code.splitlines(), []
     changes_speed = any(_call_of(line, SPEED_STEPS) is not None for line in lines)
     for ask in asks.values():
@@ -125,7 +131,32 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         notes.append(f"`{lines[steps[0]].strip()}` -> `{'; '.join(replaced)}`: the instruction asks "
                      f"{_asked_words(ask)} {ask.name}")  # fmt: skip
         lines[steps[0] : steps[0] + 1] = [indent + line for line in replaced]
+    return _sides_of_the_scene(lines, notes, words, names)
+
+
+def _sides_of_the_scene(
+    lines: list[str], notes: list[str], words: str, names: list[str]
+) -> tuple[str, list[str]]:
+    """``keep_side`` about an object the words do not name, when they name none, as a shift to that side."""
+    if names_in(words, names):
+        return "\n".join(lines), notes
+    for index, line in enumerate(lines):
+        call = _call_of(line, ("keep_side",))
+        side = _direction(call.args[1]) if call is not None and len(call.args) > 1 else None
+        if side is None:
+            continue
+        word = intensity_word(words)
+        shifted = f"t = shift(t, {side!r}{f', {word!r}' if word else ''})"
+        notes.append(f"`{line.strip()}` -> `{shifted}`: the instruction names no object, so {side} is a "
+                     f"side of the scene")  # fmt: skip
+        lines[index] = line[: len(line) - len(line.lstrip())] + shifted
     return "\n".join(lines), notes
+
+
+def _direction(node: ast.expr) -> str | None:
+    if not isinstance(node, ast.Constant):
+        return None
+    return DIRECTION_SYNONYMS.get(str(node.value).strip().lower())
 
 
 def _asked_words(ask: ObjectAsk) -> str:
@@ -150,11 +181,14 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
         return [speed] if rest is None else [rest, speed]
     if ask.relation == "side":
         return [f"t = keep_side(t, {ask.side!r}, {point})"]
-    if skill != "avoid" or len(_objects(call)) != 1 or _clearance_stated(call, ask.clause):
+    wanted = "move_closer" if ask.relation == "closer" else "move_away"
+    if skill == wanted or len(_objects(call)) != 1:
+        return None
+    if skill == "avoid" and _clearance_stated(call, ask.clause):
         return None
     word = intensity_word(ask.clause)
     amount = f", {word!r}" if word else ""
-    return [f"t = {'move_closer' if ask.relation == 'closer' else 'move_away'}(t, {point}{amount})"]
+    return [f"t = {wanted}(t, {point}{amount})"]
 
 
 def _call_of(line: str, skills: tuple[str, ...]) -> ast.Call | None:

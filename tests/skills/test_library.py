@@ -126,6 +126,17 @@ def test_move_closer_and_away() -> None:
     assert np.allclose(away[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, away)
 
 
+def test_a_vague_move_away_from_something_far_asks_for_little_and_a_number_is_kept() -> None:
+    t = curve()
+    size = float(np.ptp(t[:, :3], axis=0).max())
+    nearest = t[N // 2, :3]
+    near, far = nearest + [0.0, 0.0, 0.1 * size], nearest + [0.0, 0.0, 0.9 * size]
+    moved = lambda after: float(np.abs(after[:, :3] - t[:, :3]).max())  # noqa: E731
+    assert moved(objects.move_away(t, near, "a lot")) > 0.15 * size
+    assert moved(objects.move_away(t, far, "a lot")) < 1e-9
+    assert moved(objects.move_away(t, far, 0.2)) > 0.19  # the user's own number
+
+
 def test_avoid_from_one_and_several_points() -> None:
     t = curve()
     near = [[0.3, 1.0, 1.0], [0.0, 0.4, 1.0]]

@@ -31,6 +31,9 @@ CLOSER_FRACTIONS = {
 }  # fmt: skip
 """Share of the way to the object; calibrated on latte-dev (0.3 / 0.5 / 0.75 before overshot)."""
 INFLUENCE = 0.5  # how far along the path (fraction of its size) an object-centred change reaches
+FAR_FROM = (0.4, 0.3)  # move_away fades out for an object already this far (fraction of the path's size)
+# from the path, to nothing at the sum: "further away" from something far asks for little (latte-dev:
+# dist MSE 0.00099 -> 0.00095, DFD 0.0924 -> 0.0874; ovita-dev unchanged)
 
 
 def _fraction(amount: Any) -> float:
@@ -69,15 +72,24 @@ def move_away(trajectory: TrajectoryArg, point: PointArg, amount: DistanceArg = 
     """Push the path away from a point by amount (a distance, or 'a bit' / 'a lot').
 
     Push the path away from a point by amount (a distance, or 'a bit', 'a lot'); the nearest part moves
-    most; start and goal stay.
+    most; start and goal stay. A vague amount shrinks when the path already passes far from the point.
     """
     t = as_trajectory(trajectory)
     source = as_point(point)
     distance = resolve_amount(amount, t)
+    if amount is None or isinstance(amount, str):
+        distance *= _still_near(t, source)
     away = t[:, :3] - source
     away /= np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-12)
     t[:, :3] += (distance * _weight(t, source))[:, None] * away
     return t
+
+
+def _still_near(t: Array, point: Array) -> float:
+    """1 when the path passes within FAR_FROM[0] of the point, easing to 0 over FAR_FROM[1] beyond."""
+    gap = float(np.linalg.norm(t[:, :3] - point, axis=1).min()) / extent(t)
+    start, width = FAR_FROM
+    return 1.0 - float(smoothstep(np.asarray((gap - start) / width)))
 
 
 def avoid(trajectory: TrajectoryArg, points: PointsArg, clearance: float, iterations: int = 50) -> Array:

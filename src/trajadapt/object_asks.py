@@ -18,6 +18,11 @@ the scene's objects asks one thing of it:
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
   ``move_closer`` / ``move_away`` with the clause's vague word.
 
+A whole-path ``shift`` in a direction the words never say, where a clause asks to come closer to or
+go away from an object that no step touches, becomes that ``move_closer`` / ``move_away``; a
+``midpoint`` of an object the words name and one they do not (with no "middle" or "between" in
+them) is the named object itself.
+
 When the words name no object at all, a side is a side of the scene ("stay on the left", "stay on
 the front part"): a ``keep_side`` about an object the user never named becomes a ``shift`` to that
 side with the clause's vague word.
@@ -131,7 +136,60 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         notes.append(f"`{lines[steps[0]].strip()}` -> `{'; '.join(replaced)}`: the instruction asks "
                      f"{_asked_words(ask)} {ask.name}")  # fmt: skip
         lines[steps[0] : steps[0] + 1] = [indent + line for line in replaced]
+    _unasked_directions(lines, notes, words, asks)
+    _unnamed_midpoints(lines, notes, words, names)
     return _sides_of_the_scene(lines, notes, words, names)
+
+
+def _unasked_directions(lines: list[str], notes: list[str], words: str, asks: dict[str, ObjectAsk]) -> None:
+    """A shift in a direction the words never say, written for a closer/away ask no step makes, replaced."""
+    said = {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}
+    for ask in asks.values():
+        if ask.relation not in ("closer", "away") or any(
+            _on_object(_call_of(line, DISTANCE_STEPS), ask.name) for line in lines
+        ):
+            continue
+        shifts = [i for i, line in enumerate(lines) if _shift_direction(line) not in (None, *said)]
+        if len(shifts) != 1:
+            continue
+        line = lines[shifts[0]]
+        word = intensity_word(ask.clause)
+        skill = "move_closer" if ask.relation == "closer" else "move_away"
+        replaced = f"t = {skill}(t, detect_objects({ask.name!r}){f', {word!r}' if word else ''})"
+        notes.append(f"`{line.strip()}` -> `{replaced}`: the instruction names no such direction; it asks "
+                     f"{_asked_words(ask)} {ask.name}")  # fmt: skip
+        lines[shifts[0]] = line[: len(line) - len(line.lstrip())] + replaced
+
+
+def _shift_direction(line: str) -> str | None:
+    call = _call_of(line, ("shift",))
+    return _direction(call.args[1]) if call is not None and len(call.args) > 1 else None
+
+
+def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
+    """``midpoint(a, b)`` where the words name only ``a`` (and no middle or between): ``a`` alone."""
+    if re.search(r"\b(?:mid\w*|middle|between|cent(?:re|er))\b", words, re.I):
+        return
+    named = {n.casefold() for n in names_in(words, names)}
+    for index, line in enumerate(lines):
+        tree = assigned_call(line)
+        if tree is None:
+            continue
+        for node in ast.walk(tree[0]):
+            if not (
+                isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "midpoint"
+            ):
+                continue
+            ends = [_detected(a) or "" for a in node.args]
+            kept = [a for a, name in zip(node.args, ends, strict=False) if name.casefold() in named]
+            if len(node.args) == 2 and len(kept) == 1:
+                node.func, node.args = ast.Name("detect_objects", ast.Load()), [kept[0].args[0]]  # type: ignore[attr-defined]
+        changed = ast.unparse(tree[0])
+        if changed != line.strip():
+            notes.append(
+                f"`{line.strip()}` -> `{changed}`: the instruction names only one of the two objects"
+            )
+            lines[index] = line[: len(line) - len(line.lstrip())] + changed
 
 
 def _sides_of_the_scene(

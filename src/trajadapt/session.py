@@ -39,6 +39,7 @@ from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.explain import explain_code
 from trajadapt.speed_scope import localize_speed
+from trajadapt.stated_amounts import use_stated_amounts
 from trajadapt.store import NewExchange, NewSession, Store
 from trajadapt.trajectory import Trajectory
 from trajadapt.unasked_steps import leave_out_unasked
@@ -473,10 +474,11 @@ class AdaptationSession:
         names = [obj.name for obj in self.case.scene.objects]
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
+        code, restored = use_stated_amounts(code, self._asked)
         code, scoped = scope_to_parts(code, self._asked)
         code, reread = replace_object_steps(code, self._asked, names)
         code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + scoped + reread + placed
+        self._left_out = left_out + replaced + restored + scoped + reread + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

@@ -1,0 +1,74 @@
+"""Amounts the user gave for a direction, put back where the code wrote a vague word instead.
+
+A small model writes ``shift(t, 'up', 'slightly')`` for "go upwards by 0.2 walking slightly closer to
+the table": the vague word belongs to another part of the sentence, the user's number is lost. Each
+clause (split as ``wording.CLAUSE_BREAKS`` splits them) with exactly one direction word and exactly
+one "by <number>" gives that direction its amount; the one directional step in that direction
+(``shift``, ``shift_goal``, ``shift_start``, ``shift_part``) whose amount is a word or missing gets
+the number. A step with a number of its own keeps it (``unstated_amounts`` judges numbers), and a
+clause with two directions or two numbers is left alone. A review note says so.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+
+from trajadapt.code_parse import assigned_call
+from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.wording import CLAUSE_BREAKS
+
+DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
+BY_NUMBER = re.compile(r"\bby\s+((?:\d+\.?\d*|\.\d+))\b", re.I)
+
+
+def direction_amounts(words: str) -> dict[str, float]:
+    """The amount each direction is given in the clauses of ``words`` ("upwards by 0.2" -> up: 0.2)."""
+    amounts: dict[str, list[float]] = {}
+    for clause in CLAUSE_BREAKS.split(words):
+        said = {
+            DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in DIRECTION_SYNONYMS
+        }
+        numbers = BY_NUMBER.findall(clause)
+        if len(said) == 1 and len(numbers) == 1:
+            amounts.setdefault(next(iter(said)), []).append(float(numbers[0]))
+    return {direction: found[0] for direction, found in amounts.items() if len(set(found)) == 1}
+
+
+def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with each direction's stated amount in its one vague step (see the module docstring)."""
+    amounts = direction_amounts(" ".join(asked))
+    lines, notes = code.splitlines(), []
+    for direction, amount in amounts.items():
+        vague = [i for i, line in enumerate(lines) if _vague_step(line) == direction]
+        if len(vague) != 1:
+            continue
+        line = lines[vague[0]]
+        tree, call, _ = assigned_call(line)  # type: ignore[misc]
+        if len(call.args) > 2:
+            call.args[2] = ast.Constant(amount)
+        else:
+            call.args.append(ast.Constant(amount))
+        changed = ast.unparse(tree)
+        notes.append(
+            f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
+        )
+        lines[vague[0]] = line[: len(line) - len(line.lstrip())] + changed
+    return "\n".join(lines), notes
+
+
+def _vague_step(line: str) -> str | None:
+    """The direction of a directional step whose amount is a word or missing; None for other lines."""
+    found = assigned_call(line)
+    if found is None or found[2] not in DIRECTIONAL_STEPS:
+        return None
+    call = found[1]
+    if len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
+        return None
+    if any(k.arg == "amount" for k in call.keywords):
+        return None
+    amount = call.args[2] if len(call.args) > 2 else None
+    if amount is not None and not (isinstance(amount, ast.Constant) and isinstance(amount.value, str | None)):
+        return None
+    return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())

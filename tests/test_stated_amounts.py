@@ -1,0 +1,52 @@
+"""An amount the user gave for a direction, put back where the code wrote a vague word."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.stated_amounts import direction_amounts, use_stated_amounts
+
+CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("words", "amounts"),
+    [
+        ("climb upwards by 0.5 while passing a bit closer to the lamp", {"up": 0.5}),
+        ("go left by 20, then lower by 5", {"left": 20.0, "down": 5.0}),
+        ("go up and left by 0.2", {"left": 0.2}),  # 'and' ends the clause of 'up'
+        ("go left or right by 0.2", {}),  # two directions in one clause
+        ("go left by 0.2 or by 0.3", {}),  # two numbers
+        ("go left by 0.2. go left by 0.3", {}),  # two amounts for one direction
+    ],
+)
+def test_each_direction_gets_the_one_number_its_clause_gives(words: str, amounts: dict[str, float]) -> None:
+    assert direction_amounts(words) == amounts
+
+
+@pytest.mark.parametrize(
+    ("step", "expected"),
+    [
+        ("t = shift(t, 'upwards', 'slightly')", "t = shift(t, 'upwards', 0.5)"),
+        ("t = shift_goal(t, 'up')", "t = shift_goal(t, 'up', 0.5)"),
+    ],
+)
+def test_a_vague_or_missing_amount_becomes_the_stated_one_with_a_note(step: str, expected: str) -> None:
+    code, notes = use_stated_amounts(
+        CODE.format(step=step), ["climb upwards by 0.5 a bit closer to the lamp"]
+    )
+    assert expected in code.splitlines()
+    assert notes == [f"`{step}` -> `{expected}`: the instruction gives up the amount 0.5"]
+
+
+@pytest.mark.parametrize(
+    "step",
+    [
+        "t = shift(t, 'up', 0.3)",  # a number of its own
+        "t = shift(t, 'left', 'slightly')",  # another direction
+        "t = shift(t, 'up', 'a bit')\nt = shift_goal(t, 'up')",  # which one?
+    ],
+)
+def test_steps_with_a_number_another_direction_or_a_twin_stay(step: str) -> None:
+    code = CODE.format(step=step)
+    assert use_stated_amounts(code, ["climb upwards by 0.5"]) == (code, [])

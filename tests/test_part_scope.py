@@ -83,3 +83,33 @@ def test_the_step_written_for_the_part_is_replaced(step: str, words: str, expect
 def test_steps_that_already_do_it_or_are_ambiguous_stay(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert scope_to_parts(code, [words]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "the new goal is halfway between the lamp and the box",
+        "finish at the lamp",
+        "the goal should be the lamp",
+    ],
+)
+def test_a_new_goal_makes_the_path_end_at_the_point_instead_of_passing_it(words: str) -> None:
+    code, notes = scope_to_parts(CODE.format(step="t = pass_through(t, detect_objects('lamp'))"), [words])
+    assert "t = reach(t, detect_objects('lamp'))" in code.splitlines()
+    assert "gives a new goal" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        ("t = pass_through(t, detect_objects('lamp'))", "pass through the lamp"),  # no new goal
+        (
+            "t = pass_through(t, detect_objects('lamp'))\nt = reach(t, detect_objects('box'))",
+            "finish at the box",
+        ),
+        ("t = move_closer(t, detect_objects('goal'))", "the new goal is further left"),  # the path's own end
+    ],
+)
+def test_passing_by_an_existing_reach_or_the_old_goal_stay(step: str, words: str) -> None:
+    code = CODE.format(step=step)
+    assert scope_to_parts(code, [words]) == (code, [])

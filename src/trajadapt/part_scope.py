@@ -13,7 +13,10 @@ that names one part of the path and one direction asks for a move of that part:
 - past the goal ("after reaching the goal", "beyond the end", "once at the destination") ->
   ``extend`` (also with no direction when the clause says "further", "more", "continue": along the
   final heading), unless the code already goes on past the goal;
-- the first N waypoints ("first 6 points") -> ``shift_part(..., part=(0, N))``.
+- the first N waypoints ("first 6 points") -> ``shift_part(..., part=(0, N))``;
+- a new goal ("the new goal position is the midpoint of ...", "the goal should be the lamp", "end at
+  the lamp"): a ``pass_through`` or ``move_closer`` of a point the code computes from the scene's
+  objects -> ``reach`` of that point (the path ends there instead of passing by).
 
 The one step written for it is replaced: a whole-path ``shift`` in that direction (or, past the
 goal, a ``shift_goal``), else a ``move_closer``/``move_away`` to the path's own start or goal (a
@@ -46,6 +49,11 @@ START = re.compile(
 GOAL = re.compile(
     r"\b(?:the\s+goal\b|goal\s+(?:position|point|pose|location)|end(?:ing)?\s+(?:position|point|pose|location)"
     r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
+    re.I,
+)
+NEW_GOAL = re.compile(
+    r"\bnew\s+(?:goal|end|destination)|\b(?:goal|destination)(?:\s+(?:position|point))?\s+(?:is|should be"
+    r"|becomes|will be|must be)\b|\b(?:end|finish|terminate)\s+(?:at|on|in)\b",
     re.I,
 )
 FIRST_COUNT = re.compile(r"\bfirst\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
@@ -134,7 +142,9 @@ def _first_count(clause: str) -> int:
 
 def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with the one step written for each part move replaced by that move, and a note each."""
-    lines, notes = code.splitlines(), []
+    lines, notes = code.splitlines(), list[str]()
+    if NEW_GOAL.search(" ".join(asked)):
+        _reach_the_new_goal(lines, notes)
     for move in part_moves(" ".join(asked)):
         if move.part == "past the goal" and any(
             _skill(line) in ("extend", "append_segment") for line in lines
@@ -148,6 +158,26 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
         notes.append(f"`{before}` -> `{after}`: the instruction moves {move.part}, not the whole path")
     return "\n".join(lines), notes
+
+
+def _reach_the_new_goal(lines: list[str], notes: list[str]) -> None:
+    """The one ``pass_through``/``move_closer`` of a point from the scene's objects, as ``reach`` of it."""
+    passing = [(i, call) for i, call in _calls(lines, ("pass_through", "move_closer")) if _scene_point(call)]
+    if len(passing) != 1 or any(_skill(line) in ("reach", "append_segment") for line in lines):
+        return
+    index, call = passing[0]
+    before = lines[index].strip()
+    after = f"t = reach(t, {ast.unparse(call.args[1])})"
+    lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
+    notes.append(f"`{before}` -> `{after}`: the instruction gives a new goal, so the path ends there")
+
+
+def _scene_point(call: ast.Call) -> bool:
+    """Whether the call's point comes from ``detect_objects`` of scene objects (not the path's ends)."""
+    if len(call.args) < 2 or _on_landmark(call):
+        return False
+    names = [n for n in ast.walk(call.args[1]) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
+    return any(n.func.id == "detect_objects" for n in names if isinstance(n.func, ast.Name))
 
 
 def _step_for(move: PartMove, lines: list[str]) -> tuple[int | None, ast.expr | None]:

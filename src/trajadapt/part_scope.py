@@ -142,7 +142,8 @@ def _first_count(clause: str) -> int:
 
 def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with the one step written for each part move replaced by that move, and a note each."""
-    lines, notes = code.splitlines(), list[str]()
+    lines = code.splitlines()
+    notes: list[str] = []
     if NEW_GOAL.search(" ".join(asked)):
         _reach_the_new_goal(lines, notes)
     for move in part_moves(" ".join(asked)):

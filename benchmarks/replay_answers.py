@@ -41,9 +41,11 @@ class StoredAnswers(Backend):
         """The stored answer whose case the request's task text names."""
         task = request.messages[1].content
         found = [
-            answer for (environment, line), answer in self.answers if environment in task and line in task
-        ]
-        return Completion(text=found[0] if found else "no stored answer", model=self.model)
+            (len(line), answer)
+            for (environment, line), answer in self.answers
+            if environment in task and line in task
+        ]  # the longest instruction that matches: "Go left by 20" is inside "Go left by 20 keeping ..."
+        return Completion(text=max(found)[1] if found else "no stored answer", model=self.model)
 
 
 def main() -> None:

@@ -113,3 +113,12 @@ def test_a_new_goal_makes_the_path_end_at_the_point_instead_of_passing_it(words:
 def test_passing_by_an_existing_reach_or_the_old_goal_stay(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert scope_to_parts(code, [words]) == (code, [])
+
+
+def test_going_on_past_the_goal_with_no_direction_takes_the_shift_in_a_direction_nobody_said() -> None:
+    code, _ = scope_to_parts(
+        CODE.format(step="t = shift_goal(t, 'right', 0.1)"), ["go further by 0.1 after the goal"]
+    )
+    assert "t = extend(t, 0.1)" in code.splitlines()
+    kept = CODE.format(step="t = shift(t, 'right', 0.1)")
+    assert scope_to_parts(kept, ["go right, then further after the goal"]) == (kept, [])

@@ -18,9 +18,7 @@ the scene's objects asks one thing of it:
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
   ``move_closer`` / ``move_away`` with the clause's vague word.
 
-A whole-path ``shift`` in a direction the words never say, where a clause asks to come closer to or
-go away from an object that no step touches, becomes that ``move_closer`` / ``move_away``; a
-``midpoint`` of an object the words name and one they do not (with no "middle" or "between" in
+A ``midpoint`` of an object the words name and one they do not (with no "middle" or "between" in
 them) is the named object itself.
 
 When the words name no object at all, a side is a side of the scene ("stay on the left", "stay on
@@ -43,7 +41,7 @@ from trajadapt.code_parse import assigned_call, parse_code
 from trajadapt.geometry import DIRECTION_SYNONYMS
 from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
 from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
-from trajadapt.wording import SPEED_WORDS, names_in
+from trajadapt.wording import FASTER, SLOWER, SPEED_WORDS, names_in
 
 CLOSER = re.compile(
     r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
@@ -52,10 +50,6 @@ AWAY = re.compile(
     r"\b(?:away|further|farther|(?:greater|larger|bigger|more|increased?|wider) (?:distance|berth|space))\b",
     re.I,
 )
-FASTER = re.compile(
-    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed up)\b", re.I
-)
-SLOWER = re.compile(r"\b(?:slow\w*|decelerat\w*|leisure\w*)\b", re.I)
 NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
 KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
@@ -134,36 +128,10 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
             continue
         indent = lines[steps[0]][: len(lines[steps[0]]) - len(lines[steps[0]].lstrip())]
         notes.append(f"`{lines[steps[0]].strip()}` -> `{'; '.join(replaced)}`: the instruction asks "
-                     f"{_asked_words(ask)} {ask.name}")  # fmt: skip
+                     f"{asked_words(ask)} {ask.name}")  # fmt: skip
         lines[steps[0] : steps[0] + 1] = [indent + line for line in replaced]
-    _unasked_directions(lines, notes, words, asks)
     _unnamed_midpoints(lines, notes, words, names)
     return _sides_of_the_scene(lines, notes, words, names)
-
-
-def _unasked_directions(lines: list[str], notes: list[str], words: str, asks: dict[str, ObjectAsk]) -> None:
-    """A shift in a direction the words never say, written for a closer/away ask no step makes, replaced."""
-    said = {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}
-    for ask in asks.values():
-        if ask.relation not in ("closer", "away") or any(
-            _on_object(_call_of(line, DISTANCE_STEPS), ask.name) for line in lines
-        ):
-            continue
-        shifts = [i for i, line in enumerate(lines) if _shift_direction(line) not in (None, *said)]
-        if len(shifts) != 1:
-            continue
-        line = lines[shifts[0]]
-        word = intensity_word(ask.clause)
-        skill = "move_closer" if ask.relation == "closer" else "move_away"
-        replaced = f"t = {skill}(t, detect_objects({ask.name!r}){f', {word!r}' if word else ''})"
-        notes.append(f"`{line.strip()}` -> `{replaced}`: the instruction names no such direction; it asks "
-                     f"{_asked_words(ask)} {ask.name}")  # fmt: skip
-        lines[shifts[0]] = line[: len(line) - len(line.lstrip())] + replaced
-
-
-def _shift_direction(line: str) -> str | None:
-    call = _call_of(line, ("shift",))
-    return _direction(call.args[1]) if call is not None and len(call.args) > 1 else None
 
 
 def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
@@ -217,7 +185,8 @@ def _direction(node: ast.expr) -> str | None:
     return DIRECTION_SYNONYMS.get(str(node.value).strip().lower())
 
 
-def _asked_words(ask: ObjectAsk) -> str:
+def asked_words(ask: ObjectAsk) -> str:
+    """What the ask wants, in words that read before the object's name ('to come closer to')."""
     return {
         "faster": "for a faster pace near",
         "slower": "for a slower pace near",
@@ -273,6 +242,11 @@ def _detected(node: ast.expr) -> str | None:
     ):
         return str(node.args[0].value)
     return None
+
+
+def step_on_object(line: str, name: str) -> bool:
+    """Whether ``line`` is a distance step (``avoid``, ``move_away``, ``move_closer``) on object ``name``."""
+    return _on_object(_call_of(line, DISTANCE_STEPS), name)
 
 
 def _on_object(call: ast.Call | None, name: str) -> bool:

@@ -36,7 +36,7 @@ from trajadapt.code_parse import assigned_call
 from trajadapt.geometry import DIRECTION_SYNONYMS
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
-from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS
+from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, said_directions
 
 AFTER_GOAL = re.compile(
     r"\b(?:after|past|beyond|once)\b(?:\s+\w+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)\b", re.I
@@ -102,9 +102,7 @@ def part_moves(words: str) -> list[PartMove]:
 
 
 def _clause_move(clause: str) -> PartMove | None:
-    directions = {
-        DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in DIRECTION_SYNONYMS
-    }
+    directions = said_directions(clause)
     if len(directions) > 1 or SPEED_WORDS.search(clause):
         return None
     direction = next(iter(directions), None)
@@ -151,7 +149,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
             _skill(line) in ("extend", "append_segment") for line in lines
         ):
             continue
-        index, amount = _step_for(move, lines)
+        index, amount = _step_for(move, lines, said_directions(" ".join(asked)))
         if index is None:
             continue
         before = lines[index].strip()
@@ -181,10 +179,14 @@ def _scene_point(call: ast.Call) -> bool:
     return any(n.func.id == "detect_objects" for n in names if isinstance(n.func, ast.Name))
 
 
-def _step_for(move: PartMove, lines: list[str]) -> tuple[int | None, ast.expr | None]:
-    """The line written for ``move`` and the amount it gave, or (None, None) when none or several."""
+def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | None, ast.expr | None]:
+    """The line written for ``move`` and the amount it gave, or (None, None) when none or several.
+
+    A move past the goal with no direction takes a shift in a direction the words never say.
+    """
     shifts = SHIFTS if move.part == "past the goal" else SHIFTS[:1]
-    written = [(i, call) for i, call in _calls(lines, shifts) if _direction(call) == move.direction]
+    wanted = (lambda d: d is not None and d not in said) if move.direction is None else move.direction.__eq__
+    written = [(i, call) for i, call in _calls(lines, shifts) if wanted(_direction(call))]
     if not written:
         written = [(i, call) for i, call in _calls(lines, LANDMARK_STEPS) if _on_landmark(call)]
         return (written[0][0], None) if len(written) == 1 else (None, None)

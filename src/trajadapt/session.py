@@ -42,6 +42,7 @@ from trajadapt.speed_scope import localize_speed
 from trajadapt.stated_amounts import use_stated_amounts
 from trajadapt.store import NewExchange, NewSession, Store
 from trajadapt.trajectory import Trajectory
+from trajadapt.unasked_directions import replace_unasked_shifts
 from trajadapt.unasked_steps import leave_out_unasked
 from trajadapt.unstated_amounts import replace_unstated_amounts
 
@@ -477,8 +478,9 @@ class AdaptationSession:
         code, restored = use_stated_amounts(code, self._asked)
         code, scoped = scope_to_parts(code, self._asked)
         code, reread = replace_object_steps(code, self._asked, names)
+        code, guessed = replace_unasked_shifts(code, self._asked, names)
         code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + restored + scoped + reread + placed
+        self._left_out = left_out + replaced + restored + scoped + reread + guessed + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

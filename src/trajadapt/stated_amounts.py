@@ -17,7 +17,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call
 from trajadapt.geometry import DIRECTION_SYNONYMS
-from trajadapt.wording import CLAUSE_BREAKS
+from trajadapt.wording import CLAUSE_BREAKS, said_directions
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
 BY_NUMBER = re.compile(r"\bby\s+((?:\d+\.?\d*|\.\d+))\b", re.I)
@@ -27,9 +27,7 @@ def direction_amounts(words: str) -> dict[str, float]:
     """The amount each direction is given in the clauses of ``words`` ("upwards by 0.2" -> up: 0.2)."""
     amounts: dict[str, list[float]] = {}
     for clause in CLAUSE_BREAKS.split(words):
-        said = {
-            DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in DIRECTION_SYNONYMS
-        }
+        said = said_directions(clause)
         numbers = BY_NUMBER.findall(clause)
         if len(said) == 1 and len(numbers) == 1:
             amounts.setdefault(next(iter(said)), []).append(float(numbers[0]))

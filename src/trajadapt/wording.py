@@ -9,6 +9,8 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
+from trajadapt.geometry import DIRECTION_SYNONYMS
+
 SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
 """Punctuation that ends a clause; the point of a decimal number ("by 0.2") does not."""
 
@@ -17,6 +19,13 @@ CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I
 
 SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
 """Word stems that make a clause about speed."""
+
+
+FASTER = re.compile(
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed up)\b", re.I
+)
+SLOWER = re.compile(r"\b(?:slow\w*|decelerat\w*|leisure\w*)\b", re.I)
+"""Word stems that ask for more speed, and for less."""
 
 
 def whole_words(text: str) -> str:
@@ -32,3 +41,8 @@ def names_in(text: str, names: Iterable[str]) -> list[str]:
     """The names that ``text`` contains as whole words, in the order of ``names``."""
     words = whole_words(text)
     return [name for name in names if name and whole_words(name) in words]
+
+
+def said_directions(words: str) -> set[str]:
+    """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back')."""
+    return {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}

@@ -1,0 +1,106 @@
+"""A shift in a direction the user never said: the model's guess at something else the words ask.
+
+A small model that cannot place a change writes a shift in some direction: ``shift(t, 'down')`` for
+"drive further away from the soap", ``shift_part(t, 'right', part='middle')`` for "go faster in
+the middle of the trajectory". When none of the user's words is a direction word (``left``, ``up``,
+``backwards``, ...) of that shift and the words ask for something no step makes, the one such shift
+becomes that step:
+
+- a clause asks to come closer to / go away from an object and no step touches the object ->
+  ``move_closer`` / ``move_away`` of it with the clause's vague word;
+- the words ask for a faster or slower pace in no particular object's place, and the code changes no
+  speed -> ``scale_speed`` with the calibrated factor, in the shift's part (``part=``) or the part
+  the words name ("in the middle", "at the start", "towards the end"), else everywhere.
+
+Two such shifts, or a shift the words give a direction for, are left alone. A review note says so.
+Measured on stored answers in docs/benchmarks.md.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterable
+
+from trajadapt.code_parse import assigned_call
+from trajadapt.geometry import DIRECTION_SYNONYMS, PART_WORDS
+from trajadapt.object_asks import asked_words, object_asks, step_on_object
+from trajadapt.unstated_amounts import intensity_word, speed_factor
+from trajadapt.wording import FASTER, SLOWER, said_directions, whole_words
+
+SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
+SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
+
+
+def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with its one shift in an unsaid direction made into what the words ask, and a note."""
+    words, names = " ".join(asked), list(names)
+    lines = code.splitlines()
+    unsaid = [
+        i for i, line in enumerate(lines) if _shift_direction(line) not in (None, *said_directions(words))
+    ]
+    if len(unsaid) != 1:
+        return code, []
+    index = unsaid[0]
+    replaced, reason = _asked_instead(lines, index, words, names)
+    if replaced is None:
+        return code, []
+    before = lines[index]
+    lines[index] = before[: len(before) - len(before.lstrip())] + replaced
+    return "\n".join(lines), [
+        f"`{before.strip()}` -> `{replaced}`: the instruction names no such direction; {reason}"
+    ]
+
+
+def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -> tuple[str | None, str]:
+    """The step the words ask for in place of the shift at ``index``, and why; (None, '') for none."""
+    for ask in object_asks(words, names).values():
+        if ask.relation in ("closer", "away") and not any(step_on_object(x, ask.name) for x in lines):
+            word = intensity_word(ask.clause)
+            skill = "move_closer" if ask.relation == "closer" else "move_away"
+            step = f"t = {skill}(t, detect_objects({ask.name!r}){f', {word!r}' if word else ''})"
+            return step, f"it asks {asked_words(ask)} {ask.name}"
+    faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
+    if (
+        faster == slower
+        or any(_skill(x) in SPEED_STEPS for x in lines)
+        or any(ask.relation in ("faster", "slower") for ask in object_asks(words, names).values())
+    ):
+        return None, ""
+    part = _shift_part(lines[index]) or _part_named(words)
+    where = f", part={part!r}" if part else ""
+    step = f"t = scale_speed(t, {speed_factor(words, faster=faster)}{where})"
+    return step, f"it asks for a {'faster' if faster else 'slower'} pace"
+
+
+def _skill(line: str) -> str | None:
+    found = assigned_call(line)
+    return found[2] if found is not None else None
+
+
+def _shift_direction(line: str) -> str | None:
+    found = assigned_call(line)
+    if found is None or found[2] not in SHIFTS or len(found[1].args) < 2:
+        return None
+    direction = found[1].args[1]
+    return (
+        DIRECTION_SYNONYMS.get(str(direction.value).lower()) if isinstance(direction, ast.Constant) else None
+    )
+
+
+def _shift_part(line: str) -> str | None:
+    """The ``part='...'`` word of a ``shift_part`` line, if it gives one."""
+    found = assigned_call(line)
+    if found is None:
+        return None
+    part = next((k.value for k in found[1].keywords if k.arg == "part"), None)
+    if part is None and found[2] == "shift_part" and len(found[1].args) > 3:
+        part = found[1].args[3]
+    return str(part.value) if isinstance(part, ast.Constant) and isinstance(part.value, str) else None
+
+
+def _part_named(words: str) -> str | None:
+    """The one part of the path the words name ('middle', 'start', 'end', 'first half', ...)."""
+    text = whole_words(words)
+    named = [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
+    longest = [p for p in named if not any(p != o and p in o for o in named)]
+    return longest[0] if len(longest) == 1 else None

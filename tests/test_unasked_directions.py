@@ -1,0 +1,44 @@
+"""A shift in a direction the user never said becomes what the words ask for instead."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.unasked_directions import replace_unasked_shifts
+
+NAMES = ["Lamp", "sofa"]
+CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        ("t = shift(t, 'down')", "drive a bit further from the lamp", "t = move_away(t, detect_objects('Lamp'), 'a bit')"),
+        ("t = shift_goal(t, 'left')", "come closer to the sofa", "t = move_closer(t, detect_objects('sofa'))"),
+        ("t = shift_part(t, 'right', part='middle')", "hurry in the middle", "t = scale_speed(t, 1.4, part='middle')"),
+        ("t = shift(t, 'up')", "a lot slower towards the end", "t = scale_speed(t, 0.45, part='end')"),
+        ("t = shift(t, 'up')", "move slower", "t = scale_speed(t, 0.65)"),
+    ],
+)  # fmt: skip
+def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(
+    step: str, words: str, expected: str
+) -> None:
+    code, notes = replace_unasked_shifts(CODE.format(step=step), [words], NAMES)
+    assert code.splitlines()[1] == expected
+    assert "names no such direction" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        ("t = shift(t, 'down')", "go down and further from the lamp"),  # the words say down
+        ("t = shift(t, 'up')\nt = shift(t, 'left')", "further from the lamp"),  # two guesses: which?
+        ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "further from the lamp"),  # done
+        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "go faster"),  # the speed is changed already
+        ("t = shift(t, 'up')", "go faster near the lamp"),  # a speed placed at an object: object_asks
+        ("t = shift(t, 'up')", "make the path smoother"),  # nothing else asked
+    ],
+)
+def test_said_directions_several_guesses_or_nothing_asked_stay(step: str, words: str) -> None:
+    code = CODE.format(step=step)
+    assert replace_unasked_shifts(code, [words], NAMES) == (code, [])

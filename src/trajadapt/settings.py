@@ -44,7 +44,9 @@ class Settings:
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
         leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
             change, an extension past the goal, a pause, a loop, ...; skills mode), and replace a
-            distance the instruction never gives by its vague word or the default, with a review note.
+            distance the instruction never gives by its vague word or the default, with a review note;
+            also replace a step that does something other than what its clause asks (a part of the
+            path, a speed near an object, a side, closer/away, a stated amount: see the README).
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the

@@ -27,6 +27,7 @@ from trajadapt.errors import (
     SessionStateError,
 )
 from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
+from trajadapt.height_asks import relate_heights
 from trajadapt.object_asks import replace_object_steps
 from trajadapt.part_scope import scope_to_parts
 from trajadapt.projection import project
@@ -476,11 +477,12 @@ class AdaptationSession:
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
         code, restored = use_stated_amounts(code, self._asked)
+        code, heights = relate_heights(code, self._asked)
         code, scoped = scope_to_parts(code, self._asked)
         code, reread = replace_object_steps(code, self._asked, names)
         code, guessed = replace_unasked_shifts(code, self._asked, names)
         code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + restored + scoped + reread + guessed + placed
+        self._left_out = left_out + replaced + restored + heights + scoped + reread + guessed + placed
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self) -> Completion:

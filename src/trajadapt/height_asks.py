@@ -1,0 +1,86 @@
+"""A height the user gives with its relation, and a height step with the wrong relation, replaced.
+
+A small model writes ``stay_below(t, 0.1)`` for "stay at a height of 0.1 from the ground": the
+number is right, the relation is not (the path should fly at 0.1, not merely under it). The words
+around a height number say which skill keeps it: "at a height of 0.1", "at an altitude of 2", "fly
+at 1.5" -> ``set_height``; "below", "under", "lower than", "at most" -> ``stay_below``; "above",
+"over", "higher than", "at least", "exceed" -> ``stay_above``; a negation just before turns the
+relation round ("never higher than 3", "do not exceed 3" -> ``stay_below``). When the words give
+exactly one such height and the code has exactly one height step with that number and another
+skill, the step's skill is replaced. A review note says so.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+
+from trajadapt.code_parse import assigned_call
+
+NUMBER = r"((?:\d+\.?\d*|\.\d+))"
+BELOW = r"below|under(?:neath)?|lower than|at most"
+ABOVE = r"above|over|higher than|more than|at least|exceed\w*"
+AT = r"at (?:a |an |the )?(?:height|altitude|elevation)(?: of)?|(?:fly|hover|stay|keep|cruise|move)\w* at"
+RELATIONS = (
+    ("stay_below", re.compile(rf"\b(?:{BELOW})\s+(?:a height of\s+)?{NUMBER}", re.I)),
+    ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+(?:a height of\s+)?{NUMBER}", re.I)),
+    ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
+)
+HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
+
+
+NEGATION = re.compile(r"\b(?:not|never|no|n't|don't|nowhere)\b(?:\s+\w+){0,2}\s*$", re.I)
+FLIPPED = {"stay_below": "stay_above", "stay_above": "stay_below", "set_height": "set_height"}
+
+
+def asked_heights(words: str) -> list[tuple[str, float]]:
+    """The (skill, height) pairs the words give ("at a height of 0.1" -> ('set_height', 0.1)).
+
+    A negation just before the relation turns it round ("never higher than 3" -> below 3).
+    """
+    found: list[tuple[int, str, float]] = []
+    for skill, pattern in RELATIONS:
+        for match in pattern.finditer(words):
+            if any(start == match.start(1) for start, _, _ in found):
+                continue
+            negated = NEGATION.search(words[: match.start()]) is not None
+            found.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
+    return [(skill, height) for _, skill, height in sorted(found)]
+
+
+def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with its one height step of the asked number given the asked relation, and a note."""
+    heights = asked_heights(" ".join(asked))
+    if len(heights) != 1:
+        return code, []
+    skill, height = heights[0]
+    lines = code.splitlines()
+    steps = [i for i, line in enumerate(lines) if _height_step(line) is not None]
+    if len(steps) != 1:
+        return code, []
+    line = lines[steps[0]]
+    written, value = _height_step(line)  # type: ignore[misc]
+    if written == skill or value is None or abs(value - height) > 1e-9 * max(1.0, height):
+        return code, []
+    changed = f"t = {skill}(t, {height:g})"
+    lines[steps[0]] = line[: len(line) - len(line.lstrip())] + changed
+    return "\n".join(lines), [
+        f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
+    ]
+
+
+def _relation(skill: str) -> str:
+    return {"set_height": "a height of", "stay_below": "a height below", "stay_above": "a height above"}[
+        skill
+    ]
+
+
+def _height_step(line: str) -> tuple[str, float | None] | None:
+    """The skill and numeric height of a one-argument height step (``stay_below(t, 0.1)``)."""
+    found = assigned_call(line)
+    if found is None or found[2] not in HEIGHT_STEPS or len(found[1].args) != 2 or found[1].keywords:
+        return None
+    height = found[1].args[1]
+    value = height.value if isinstance(height, ast.Constant) else None
+    return found[2], float(value) if isinstance(value, int | float) and not isinstance(value, bool) else None

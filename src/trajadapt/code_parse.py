@@ -10,6 +10,8 @@ from __future__ import annotations
 import ast
 import threading
 
+from trajadapt.geometry import DIRECTION_SYNONYMS
+
 _PARSE_LOCK = threading.Lock()
 
 
@@ -35,3 +37,22 @@ def assigned_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
     if isinstance(call, ast.Call) and isinstance(call.func, ast.Name):
         return tree, call, call.func.id
     return None
+
+
+def called_name(line: str) -> str | None:
+    """The function a line ``name = function(...)`` calls, or None for any other line."""
+    found = assigned_call(line)
+    return found[2] if found is not None else None
+
+
+def call_of(line: str, names: tuple[str, ...]) -> ast.Call | None:
+    """The call of a line ``name = function(...)`` when ``function`` is one of ``names``."""
+    found = assigned_call(line)
+    return found[1] if found is not None and found[2] in names else None
+
+
+def direction_argument(call: ast.Call | None) -> str | None:
+    """The canonical direction of a call's second argument ('upwards' -> 'up'), if it is a direction word."""
+    if call is None or len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
+        return None
+    return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())

@@ -37,7 +37,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import assigned_call, parse_code
+from trajadapt.code_parse import assigned_call, call_of, direction_argument, parse_code
 from trajadapt.geometry import DIRECTION_SYNONYMS
 from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
 from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
@@ -116,12 +116,12 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     words, names = " ".join(asked), list(names)
     asks = object_asks(words, names)
     lines, notes = code.splitlines(), []
-    changes_speed = any(_call_of(line, SPEED_STEPS) is not None for line in lines)
+    changes_speed = any(call_of(line, SPEED_STEPS) is not None for line in lines)
     for ask in asks.values():
         if ask.relation in ("faster", "slower") and changes_speed:
             continue
-        steps = [i for i, line in enumerate(lines) if _on_object(_call_of(line, DISTANCE_STEPS), ask.name)]
-        if len(steps) != 1 or (ask.relation == "side" and any(_call_of(x, ("keep_side",)) for x in lines)):
+        steps = [i for i, line in enumerate(lines) if _on_object(call_of(line, DISTANCE_STEPS), ask.name)]
+        if len(steps) != 1 or (ask.relation == "side" and any(call_of(x, ("keep_side",)) for x in lines)):
             continue
         replaced = _replacement(lines[steps[0]], ask)
         if replaced is None:
@@ -167,8 +167,8 @@ def _sides_of_the_scene(
     if names_in(words, names):
         return "\n".join(lines), notes
     for index, line in enumerate(lines):
-        call = _call_of(line, ("keep_side",))
-        side = _direction(call.args[1]) if call is not None and len(call.args) > 1 else None
+        call = call_of(line, ("keep_side",))
+        side = direction_argument(call)
         if side is None:
             continue
         word = intensity_word(words)
@@ -177,12 +177,6 @@ def _sides_of_the_scene(
                      f"side of the scene")  # fmt: skip
         lines[index] = line[: len(line) - len(line.lstrip())] + shifted
     return "\n".join(lines), notes
-
-
-def _direction(node: ast.expr) -> str | None:
-    if not isinstance(node, ast.Constant):
-        return None
-    return DIRECTION_SYNONYMS.get(str(node.value).strip().lower())
 
 
 def asked_words(ask: ObjectAsk) -> str:
@@ -218,11 +212,6 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     return [f"t = {wanted}(t, {point}{amount})"]
 
 
-def _call_of(line: str, skills: tuple[str, ...]) -> ast.Call | None:
-    found = assigned_call(line)
-    return found[1] if found is not None and found[2] in skills else None
-
-
 def _objects(call: ast.Call | None) -> list[str]:
     """The object names of the call's point argument: one ``detect_objects`` or a list of them."""
     if call is None or len(call.args) < 2:
@@ -246,7 +235,7 @@ def _detected(node: ast.expr) -> str | None:
 
 def step_on_object(line: str, name: str) -> bool:
     """Whether ``line`` is a distance step (``avoid``, ``move_away``, ``move_closer``) on object ``name``."""
-    return _on_object(_call_of(line, DISTANCE_STEPS), name)
+    return _on_object(call_of(line, DISTANCE_STEPS), name)
 
 
 def _on_object(call: ast.Call | None, name: str) -> bool:

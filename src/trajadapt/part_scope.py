@@ -32,8 +32,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import assigned_call
-from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.code_parse import assigned_call, called_name, direction_argument
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
 from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, said_directions
@@ -146,7 +145,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         _reach_the_new_goal(lines, notes)
     for move in part_moves(" ".join(asked)):
         if move.part == "past the goal" and any(
-            _skill(line) in ("extend", "append_segment") for line in lines
+            called_name(line) in ("extend", "append_segment") for line in lines
         ):
             continue
         index, amount = _step_for(move, lines, said_directions(" ".join(asked)))
@@ -162,7 +161,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
 def _reach_the_new_goal(lines: list[str], notes: list[str]) -> None:
     """The one ``pass_through``/``move_closer`` of a point from the scene's objects, as ``reach`` of it."""
     passing = [(i, call) for i, call in _calls(lines, ("pass_through", "move_closer")) if _scene_point(call)]
-    if len(passing) != 1 or any(_skill(line) in ("reach", "append_segment") for line in lines):
+    if len(passing) != 1 or any(called_name(line) in ("reach", "append_segment") for line in lines):
         return
     index, call = passing[0]
     before = lines[index].strip()
@@ -186,7 +185,7 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
     """
     shifts = SHIFTS if move.part == "past the goal" else SHIFTS[:1]
     wanted = (lambda d: d is not None and d not in said) if move.direction is None else move.direction.__eq__
-    written = [(i, call) for i, call in _calls(lines, shifts) if wanted(_direction(call))]
+    written = [(i, call) for i, call in _calls(lines, shifts) if wanted(direction_argument(call))]
     if not written:
         written = [(i, call) for i, call in _calls(lines, LANDMARK_STEPS) if _on_landmark(call)]
         return (written[0][0], None) if len(written) == 1 else (None, None)
@@ -199,17 +198,6 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
 def _calls(lines: list[str], skills: tuple[str, ...]) -> list[tuple[int, ast.Call]]:
     found = [(i, assigned_call(line)) for i, line in enumerate(lines)]
     return [(i, f[1]) for i, f in found if f is not None and f[2] in skills]
-
-
-def _skill(line: str) -> str | None:
-    found = assigned_call(line)
-    return found[2] if found is not None else None
-
-
-def _direction(call: ast.Call) -> str | None:
-    if len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
-        return None
-    return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
 
 
 def _on_landmark(call: ast.Call) -> bool:

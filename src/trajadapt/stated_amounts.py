@@ -15,8 +15,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call
-from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.code_parse import assigned_call, call_of, direction_argument
 from trajadapt.wording import CLAUSE_BREAKS, said_directions
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
@@ -58,15 +57,10 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
 
 def _vague_step(line: str) -> str | None:
     """The direction of a directional step whose amount is a word or missing; None for other lines."""
-    found = assigned_call(line)
-    if found is None or found[2] not in DIRECTIONAL_STEPS:
-        return None
-    call = found[1]
-    if len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
-        return None
-    if any(k.arg == "amount" for k in call.keywords):
+    call = call_of(line, DIRECTIONAL_STEPS)
+    if call is None or any(k.arg == "amount" for k in call.keywords):
         return None
     amount = call.args[2] if len(call.args) > 2 else None
     if amount is not None and not (isinstance(amount, ast.Constant) and isinstance(amount.value, str | None)):
         return None
-    return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
+    return direction_argument(call)

@@ -21,8 +21,8 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call
-from trajadapt.geometry import DIRECTION_SYNONYMS, PART_WORDS
+from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument
+from trajadapt.geometry import PART_WORDS
 from trajadapt.object_asks import asked_words, object_asks, step_on_object
 from trajadapt.unstated_amounts import intensity_word, speed_factor
 from trajadapt.wording import FASTER, SLOWER, said_directions, whole_words
@@ -62,7 +62,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
     if (
         faster == slower
-        or any(_skill(x) in SPEED_STEPS for x in lines)
+        or any(called_name(x) in SPEED_STEPS for x in lines)
         or any(ask.relation in ("faster", "slower") for ask in object_asks(words, names).values())
     ):
         return None, ""
@@ -72,19 +72,8 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     return step, f"it asks for a {'faster' if faster else 'slower'} pace"
 
 
-def _skill(line: str) -> str | None:
-    found = assigned_call(line)
-    return found[2] if found is not None else None
-
-
 def _shift_direction(line: str) -> str | None:
-    found = assigned_call(line)
-    if found is None or found[2] not in SHIFTS or len(found[1].args) < 2:
-        return None
-    direction = found[1].args[1]
-    return (
-        DIRECTION_SYNONYMS.get(str(direction.value).lower()) if isinstance(direction, ast.Constant) else None
-    )
+    return direction_argument(call_of(line, SHIFTS))
 
 
 def _shift_part(line: str) -> str | None:

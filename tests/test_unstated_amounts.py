@@ -112,3 +112,11 @@ def test_the_phrase_table_in_the_prompt_is_the_calibrated_one() -> None:
         for size, factor in sizes.items():
             phrase = f'"{size + " " if size else "walk "}{direction}" -> '
             assert phrase in prompt and f"{factor}" in prompt.split(phrase, 1)[1][:40], (direction, size)
+
+
+def test_a_made_up_radius_of_a_speed_change_is_left_to_the_default_and_a_stated_one_kept() -> None:
+    made_up = "t = set_speed(t, 5, near=detect_objects('box'), radius=1.0)"
+    code, notes = replace_unstated_amounts(made_up, ["traverse at a speed of 5 in the vicinity of the box"])
+    assert code == "t = set_speed(t, 5, near=detect_objects('box'))" and len(notes) == 1
+    stated = "t = set_speed(t, 5, near=detect_objects('box'), radius=2)"
+    assert replace_unstated_amounts(stated, ["a speed of 5 within 2 of the box"]) == (stated, [])

@@ -6,10 +6,12 @@ know (latte-dev's paths are 0.6 wide: a third of the scene). In skills code, a n
 where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``move_away``'s,
 ``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
 converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
-or removed so that the skill's calibrated default applies. A speed factor the user never gave
-(``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated factor of the prompt's phrase
-table for the words of the speed's own clause ('a bit', none, 'a lot'), in the direction the model
-chose; "by 20%", "twice", "half as fast" are stated factors. A review note says so.
+or removed so that the skill's calibrated default applies; so is a made-up ``radius`` of a speed
+change (``set_speed(t, 5, near=box, radius=1.0)`` on a 100-unit map reached no waypoint). A speed
+factor the user never gave (``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated
+factor of the prompt's phrase table for the words of the speed's own clause ('a bit', none, 'a
+lot'), in the direction the model chose; "by 20%", "twice", "half as fast" are stated factors. A
+review note says so.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
+RADII = ("radius",)  # how far a speed change reaches: a number, not an amount word; made up -> the default
 INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
 
 
@@ -134,12 +137,12 @@ def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str |
     names = list(kinds)
     changed = False
     for index, argument in enumerate(call.args):
-        if index < len(names) and _made_up(argument, kinds[names[index]], numbers):
-            call.args[index] = ast.Constant(word) if word else ast.Constant(None)
+        if index < len(names) and _made_up(argument, names[index], kinds[names[index]], numbers):
+            call.args[index] = _unstated_value(names[index], word)
             changed = True
     for keyword in call.keywords:
-        if keyword.arg in kinds and _made_up(keyword.value, kinds[keyword.arg], numbers):
-            keyword.value = ast.Constant(word) if word else ast.Constant(None)
+        if keyword.arg in kinds and _made_up(keyword.value, keyword.arg, kinds[keyword.arg], numbers):
+            keyword.value = _unstated_value(keyword.arg, word)
             changed = True
     if not changed:
         return None
@@ -184,5 +187,10 @@ def _none_by_default(keyword: ast.keyword, defaults: dict[str, object]) -> bool:
     return given_none and defaults.get(keyword.arg or "") is None
 
 
-def _made_up(node: ast.expr, kind: str, numbers: list[float]) -> bool:
-    return kind == "distance" and _literal_unstated(node, numbers)
+def _made_up(node: ast.expr, name: str, kind: str, numbers: list[float]) -> bool:
+    return (kind == "distance" or name in RADII) and _literal_unstated(node, numbers)
+
+
+def _unstated_value(name: str, word: str | None) -> ast.Constant:
+    """What replaces a made-up value: the user's vague word for an amount, the default for a radius."""
+    return ast.Constant(word if word and name not in RADII else None)

@@ -161,6 +161,17 @@ def test_pass_through_and_reach() -> None:
     assert np.allclose(objects.midpoint([0, 0, 0], [2, 4, 6]), [1, 2, 3])
 
 
+def test_pass_through_a_point_off_the_path_near_the_goal_keeps_steps_short_and_the_goal() -> None:
+    t = curve(60)
+    longest = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max())
+    target = t[-4, :3] + [0.0, 0.0, 15 * longest]  # near the goal, far off the path
+    out = objects.pass_through(t, target)
+    assert distances(out, target).min() < 1e-9 and np.allclose(out[-1], t[-1])
+    assert np.linalg.norm(np.diff(out[:, :3], axis=0), axis=1).max() < 3 * longest
+    goal_moves = objects.pass_through(t, t[-1, :3] + [0.0, 0.0, 15 * longest])  # the goal is nearest
+    assert np.allclose(goal_moves[-1, :3], t[-1, :3] + [0.0, 0.0, 15 * longest])
+
+
 def test_missing_object_and_words_are_explained() -> None:
     with pytest.raises(ValueError, match="detect_objects\\(\\) did not find"):
         objects.move_closer(curve(), None)

@@ -196,7 +196,7 @@ def pass_through(
             "(t = pass_through(t, a); t = pass_through(t, b)), or use pass_through(t, midpoint(a, b)) "
             "for the point between them"
         )
-    k = nearest_index(t, target) if index is None else int(index) % len(t)
+    k = _room_to_bend(t, target, nearest_index(t, target)) if index is None else int(index) % len(t)
     s = progress(t)
     weight = np.exp(-0.5 * ((s - s[k]) / _bend_sigma(t, target - t[k, :3], width)) ** 2)
     # the start and the goal stay: a window that is 1 at k and falls smoothly to 0 at each end
@@ -210,6 +210,28 @@ def pass_through(
         window[after] = smoothstep((1.0 - s[after]) / max(1.0 - s[k], 1e-12))
     t[:, :3] += (weight * window)[:, None] * (target - t[k, :3])
     return t
+
+
+def _room_to_bend(t: Array, target: Array, k: int) -> int:
+    """The waypoint to pass through the target at: ``k``, or the nearest one with room to bend.
+
+    The bend moves waypoint j by up to |target - t[j]| and fades to nothing at the start and the
+    goal; room means enough waypoints between j and each end for that fade to take steps no longer
+    than the path's longest on average (the smooth window's steepest step is about 1.5 times that).
+    A target near an end and off the path otherwise makes one step many times longer. When no
+    waypoint has room on both sides, the one with the most is used.
+    """
+    longest = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max())
+    if longest <= 0 or k in (0, len(t) - 1):  # at an end the end itself moves: no window to fall
+        return k
+    need = np.linalg.norm(target - t[:, :3], axis=1) / longest
+    index = np.arange(len(t))
+    shortfall = np.maximum(need - index, 0.0) + np.maximum(need - (len(t) - 1 - index), 0.0)
+    inner = index[1:-1]
+    fits = inner[shortfall[1:-1] == 0]
+    if fits.size:
+        return int(fits[np.argmin(np.abs(fits - k))]) if shortfall[k] > 0 else k
+    return int(inner[np.argmin(shortfall[1:-1])])
 
 
 def _bend_sigma(t: Array, offset: Array, width: float) -> float:

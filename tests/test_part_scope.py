@@ -122,3 +122,16 @@ def test_going_on_past_the_goal_with_no_direction_takes_the_shift_in_a_direction
     assert "t = extend(t, 0.1)" in code.splitlines()
     kept = CODE.format(step="t = shift(t, 'right', 0.1)")
     assert scope_to_parts(kept, ["go right, then further after the goal"]) == (kept, [])
+
+
+def test_a_goal_moved_against_the_whole_paths_shift_ends_on_the_other_side_and_the_middle_keeps_it() -> None:
+    step = "t = shift(t, 'left', 0.2)\nt = shift(t, 'right', 0.1)"
+    code, notes = scope_to_parts(
+        CODE.format(step=step), ["go left by 0.2 but the goal position right by 0.1"]
+    )
+    assert code.splitlines()[1:-1] == [
+        "t = shift(t, 'left', 0.2)",
+        "t = shift_part(t, 'right', 0.2, part='end')",
+        "t = shift_part(t, 'right', 0.1, part='end')",
+    ]
+    assert "against the rest's shift" in notes[0]

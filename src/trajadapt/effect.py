@@ -19,7 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.constraints import ConstraintMove
-from trajadapt.geometry import DIRECTION_SYNONYMS, DIRECTIONS, Axes, extent, progress
+from trajadapt.geometry import DIRECTION_SYNONYMS, DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
 from trajadapt.scene import SceneObject
 from trajadapt.trajectory import Trajectory
 
@@ -183,9 +183,6 @@ CLOSER = re.compile(r"\b(closer|nearer|approach\w*|smaller distance|towards?)\b"
 AWAY = re.compile(r"\b(away|further|farther|bigger distance|larger distance|avoid\w*|clear of)\b")
 
 
-OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "up": "down", "down": "up"}
-
-
 def contradictions(instruction: str, effect: Effect, axes: Axes | None = None) -> list[str]:
     """What the measured effect contradicts in the instruction's words; [] when nothing can be read."""
     text = instruction.lower()
@@ -229,7 +226,7 @@ def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
 def _direction_flags(text: str, effect: Effect, noticeable: float, axes: Axes) -> list[str]:
     words = {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", text) if w in DIRECTION_SYNONYMS}
     named = [w for w in DIRECTIONS if w in words]
-    if len(named) != 1 or OPPOSITE[named[0]] in words or CLOSER.search(text) or AWAY.search(text):
+    if len(named) != 1 or OPPOSITE_DIRECTIONS[named[0]] in words or CLOSER.search(text) or AWAY.search(text):
         return []  # several directions, or relative to an object: no single expected sign
     along = float(np.asarray(effect.mean_shift) @ axes.vector(named[0]))
     if along < -noticeable:

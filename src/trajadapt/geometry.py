@@ -94,6 +94,11 @@ AXIS_CONVENTIONS = {
 DIRECTIONS = ("left", "right", "front", "back", "up", "down")
 """The canonical direction words (DIRECTION_SYNONYMS maps every other word onto one of them)."""
 
+OPPOSITE_DIRECTIONS = {
+    "left": "right", "right": "left", "front": "back", "back": "front", "up": "down", "down": "up",
+}  # fmt: skip
+"""Each canonical direction's opposite."""
+
 RELATIVE_WORDS = ("away", "further", "farther", "closer", "towards", "toward", "near", "nearer")
 
 

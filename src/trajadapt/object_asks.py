@@ -38,7 +38,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from trajadapt.code_parse import assigned_call, call_of, direction_argument, parse_code
-from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
 from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
 from trajadapt.wording import FASTER, SLOWER, SPEED_WORDS, names_in
@@ -55,7 +55,6 @@ KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
 )
 WITHIN = re.compile(r"\bwithin\s+((?:\d+\.?\d*|\.\d+))", re.I)
-OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front", "up": "down", "down": "up"}
 DISTANCE_STEPS = ("avoid", "move_away", "move_closer")
 SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
 
@@ -107,7 +106,7 @@ def _side(clause: str) -> str:
         found = pattern.search(clause)
         word = DIRECTION_SYNONYMS.get(found.group(1).lower(), "") if found else ""
         if word:
-            return OPPOSITE[word] if flip else word
+            return OPPOSITE_DIRECTIONS[word] if flip else word
     return ""
 
 

@@ -32,7 +32,8 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import assigned_call, called_name, direction_argument
+from trajadapt.code_parse import assigned_call, called_name, direction_argument, parse_code
+from trajadapt.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
 from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, said_directions
@@ -152,10 +153,43 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         if index is None:
             continue
         before = lines[index].strip()
-        after = f"t = {move.call(amount)}"
-        lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
-        notes.append(f"`{before}` -> `{after}`: the instruction moves {move.part}, not the whole path")
+        replaced = [f"t = {step}" for step in _against_the_rest(move, lines, index, move.call(amount))]
+        indent = lines[index][: len(lines[index]) - len(lines[index].lstrip())]
+        lines[index : index + 1] = [indent + line for line in replaced]
+        why = f"the instruction moves {move.part}, not the whole path"
+        against = f", and {move.part} against the rest's shift" if len(replaced) > 1 else ""
+        notes.append(f"`{before}` -> `{'; '.join(replaced)}`: {why}{against}")
     return "\n".join(lines), notes
+
+
+def _against_the_rest(move: PartMove, lines: list[str], index: int, call: str) -> list[str]:
+    """The steps for ``move`` when the rest of the path shifts the other way: none of that at the end.
+
+    "Shift the path a little up but the goal a little down": the goal ends lower than it was and
+    the middle higher, so at the goal's end of the path the rise is taken back and the goal moves
+    down there (``shift_part(..., part='end')``); ``[call]`` alone when there is no such shift.
+    """
+    if move.part not in ("the start", "the goal") or move.direction is None:
+        return [call]
+    opposite = OPPOSITE_DIRECTIONS[move.direction]
+    shifts = [(i, c) for i, c in _calls(lines, ("shift",)) if direction_argument(c) == opposite]
+    if len(shifts) != 1 or shifts[0][0] == index:
+        return [call]
+    part = "start" if move.part == "the start" else "end"
+    whole = shifts[0][1].args[2] if len(shifts[0][1].args) > 2 else None
+    amount = _amount_argument(call)
+    return [
+        f"shift_part(t, {move.direction!r}, {ast.unparse(whole) if whole else None}, part={part!r})",
+        f"shift_part(t, {move.direction!r}, {amount}, part={part!r})",
+    ]
+
+
+def _amount_argument(call: str) -> str:
+    """The amount written in a ``shift_start``/``shift_goal`` call's source ('None' when none)."""
+    parsed = parse_code(call).body[0]
+    assert isinstance(parsed, ast.Expr) and isinstance(parsed.value, ast.Call)
+    arguments = parsed.value.args
+    return ast.unparse(arguments[2]) if len(arguments) > 2 else "None"
 
 
 def _reach_the_new_goal(lines: list[str], notes: list[str]) -> None:

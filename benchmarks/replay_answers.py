@@ -57,6 +57,9 @@ def main() -> None:
     parser.add_argument("cases", nargs="+", type=Path)
     parser.add_argument("--out", type=Path, required=True)
     args = parser.parse_args()
+    if args.out.exists() and any(args.out.iterdir()):
+        parser.error(f"{args.out} is not empty: the runner would keep its results instead of replaying; "
+                     "give a new folder")  # fmt: skip
     stored_config = BenchConfig(out_dir=args.stored)
     answers, replayed, axes = [], [], "paper"
     for case in discover_cases(args.cases):

@@ -135,3 +135,18 @@ def test_a_goal_moved_against_the_whole_paths_shift_ends_on_the_other_side_and_t
         "t = shift_part(t, 'right', 0.1, part='end')",
     ]
     assert "against the rest's shift" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        ("t = shift(t, 'left')", "go left from the start"),  # the start is a place, the path moves
+        ("t = shift(t, 'up')", "go up until the goal position"),
+        ("t = move_closer(t, detect_objects('box'))", "go closer to the box and end at the goal"),
+    ],
+)
+def test_a_part_named_as_a_place_or_a_goal_without_the_object_is_not_a_move_of_it(
+    step: str, words: str
+) -> None:
+    code = CODE.format(step=step)
+    assert scope_to_parts(code, [words]) == (code, [])

@@ -36,7 +36,7 @@ from trajadapt.code_parse import assigned_call, called_name, direction_argument,
 from trajadapt.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
-from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, said_directions
+from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, names_in, said_directions
 
 AFTER_GOAL = re.compile(
     r"\b(?:after|past|beyond|once)\b(?:\s+\w+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)\b", re.I
@@ -51,11 +51,15 @@ GOAL = re.compile(
     r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
     re.I,
 )
+SENTENCES = re.compile(r"[;!?]|\.(?!\d)|\b(?:then|but)\b", re.I)
 NEW_GOAL = re.compile(
     r"\bnew\s+(?:goal|end|destination)|\b(?:goal|destination)(?:\s+(?:position|point))?\s+(?:is|should be"
     r"|becomes|will be|must be)\b|\b(?:end|finish|terminate)\s+(?:at|on|in)\b",
     re.I,
 )
+REFERENCE = re.compile(
+    r"\b(?:from|at|since|before|until|till|to|towards?|near|in|reach\w*|approach\w*|arriv\w*)\s+$", re.I
+)  # a part after these words is a place on the path, not the part that moves
 FIRST_COUNT = re.compile(r"\bfirst\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
 KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
 FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|keep going|onward\w*)\b", re.I)
@@ -114,14 +118,17 @@ def _clause_move(clause: str) -> PartMove | None:
     if direction is None or KEEPS.search(clause):
         return None
     count = _first_count(clause)
-    parts = [
-        p for p, found in (("the start", START.search(clause)), ("the goal", GOAL.search(clause))) if found
-    ]
+    parts = [p for p, pattern in (("the start", START), ("the goal", GOAL)) if _moved_part(pattern, clause)]
     if count:
         parts.append(f"the first {count} waypoints")
     if len(parts) != 1:
         return None
     return PartMove(parts[0], direction, amount, count)
+
+
+def _moved_part(pattern: re.Pattern[str], clause: str) -> bool:
+    """Whether the clause names the part as what moves, not as a place ("go left from the start")."""
+    return any(not REFERENCE.search(clause[: found.start()]) for found in pattern.finditer(clause))
 
 
 def _clause_amount(clause: str) -> float | str | None:
@@ -143,7 +150,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     lines = code.splitlines()
     notes: list[str] = []
     if NEW_GOAL.search(" ".join(asked)):
-        _reach_the_new_goal(lines, notes)
+        _reach_the_new_goal(lines, notes, " ".join(asked))
     for move in part_moves(" ".join(asked)):
         if move.part == "past the goal" and any(
             called_name(line) in ("extend", "append_segment") for line in lines
@@ -192,9 +199,18 @@ def _amount_argument(call: str) -> str:
     return ast.unparse(arguments[2]) if len(arguments) > 2 else "None"
 
 
-def _reach_the_new_goal(lines: list[str], notes: list[str]) -> None:
-    """The one ``pass_through``/``move_closer`` of a point from the scene's objects, as ``reach`` of it."""
-    passing = [(i, call) for i, call in _calls(lines, ("pass_through", "move_closer")) if _scene_point(call)]
+def _reach_the_new_goal(lines: list[str], notes: list[str], words: str) -> None:
+    """The one ``pass_through``/``move_closer`` of the new goal's objects, as ``reach`` of their point.
+
+    The words after "new goal" (to the end of their sentence or a "then"/"but") must name every
+    object the point is made of: "go closer to the box and end at the goal" gives no new goal.
+    """
+    given = " ".join(SENTENCES.split(words[m.end() :])[0] for m in NEW_GOAL.finditer(words))
+    passing = [
+        (i, call)
+        for i, call in _calls(lines, ("pass_through", "move_closer"))
+        if _scene_point(call) and all(names_in(given, [n]) for n in _detected_names(call))
+    ]
     if len(passing) != 1 or any(called_name(line) in ("reach", "append_segment") for line in lines):
         return
     index, call = passing[0]
@@ -202,6 +218,17 @@ def _reach_the_new_goal(lines: list[str], notes: list[str]) -> None:
     after = f"t = reach(t, {ast.unparse(call.args[1])})"
     lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
     notes.append(f"`{before}` -> `{after}`: the instruction gives a new goal, so the path ends there")
+
+
+def _detected_names(call: ast.Call) -> list[str]:
+    """The names the call's point argument passes to ``detect_objects``."""
+    found = [n for n in ast.walk(call.args[1]) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
+    return [
+        str(n.args[0].value)
+        for n in found
+        if isinstance(n.func, ast.Name) and n.func.id == "detect_objects" and n.args
+        and isinstance(n.args[0], ast.Constant)
+    ]  # fmt: skip
 
 
 def _scene_point(call: ast.Call) -> bool:

@@ -35,6 +35,7 @@ def test_each_clause_asks_one_thing_of_the_one_object_it_names(
         "move closer to the sofa and then further from the sofa",  # two different asks
         "go closer to the lamp or the sofa",  # two objects in one clause
         "go faster with the box",  # a speed word without a place
+        "approach the lamp slowly",  # closer and slower: which one does a step on the lamp make?
     ],
 )
 def test_unclear_asks_are_left_out(words: str) -> None:

@@ -92,6 +92,8 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     if SPEED_WORDS.search(clause) or FASTER.search(clause) or SLOWER.search(clause):
         if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
             return None
+        if CLOSER.search(clause) or AWAY.search(clause):  # "approach the lamp slowly": both, or a place?
+            return None
         within = WITHIN.search(clause)
         radius = float(within.group(1)) if within else None
         return ObjectAsk(name, "faster" if FASTER.search(clause) else "slower", clause, radius=radius)

@@ -56,3 +56,21 @@ def direction_argument(call: ast.Call | None) -> str | None:
     if call is None or len(call.args) < 2 or not isinstance(call.args[1], ast.Constant):
         return None
     return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
+
+
+def detected_name(node: ast.expr) -> str | None:
+    """The name in ``detect_objects('<name>')``, or None for any other expression."""
+    if (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id == "detect_objects"
+        and len(node.args) == 1
+        and isinstance(node.args[0], ast.Constant)
+    ):
+        return str(node.args[0].value)
+    return None
+
+
+def in_place_of(line: str, new: str) -> str:
+    """``new`` with the indentation of ``line``: a line of code replaced where it stands."""
+    return line[: len(line) - len(line.lstrip())] + new

@@ -16,7 +16,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call
+from trajadapt.code_parse import assigned_call, in_place_of
 
 NUMBER = r"((?:\d+\.?\d*|\.\d+))"
 BELOW = r"below|under(?:neath)?|lower than|at most"
@@ -64,7 +64,7 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     if written == skill or value is None or abs(value - height) > 1e-9 * max(1.0, height):
         return code, []
     changed = f"t = {skill}(t, {height:g})"
-    lines[steps[0]] = line[: len(line) - len(line.lstrip())] + changed
+    lines[steps[0]] = in_place_of(line, changed)
     return "\n".join(lines), [
         f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
     ]

@@ -37,11 +37,18 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import assigned_call, call_of, direction_argument, parse_code
+from trajadapt.code_parse import (
+    assigned_call,
+    call_of,
+    detected_name,
+    direction_argument,
+    in_place_of,
+    parse_code,
+)
 from trajadapt.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
 from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
-from trajadapt.wording import FASTER, SLOWER, SPEED_WORDS, names_in
+from trajadapt.wording import FASTER, SLOWER, SPEED_WORDS, longest_names, names_in
 
 CLOSER = re.compile(
     r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
@@ -74,15 +81,11 @@ def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
     """The one thing the clauses of ``words`` ask of each object they name (none where two clauses differ)."""
     asks: dict[str, list[ObjectAsk]] = {}
     for clause in CLAUSES.split(words):
-        named = _longest(names_in(clause, names))
+        named = longest_names(names_in(clause, names))
         ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
         if ask is not None:
             asks.setdefault(ask.name, []).append(ask)
     return {name: found[0] for name, found in asks.items() if len({a.relation for a in found}) == 1}
-
-
-def _longest(named: list[str]) -> list[str]:
-    return [n for n in named if not any(n != o and n.casefold() in o.casefold() for o in named)]
 
 
 def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
@@ -127,10 +130,9 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         replaced = _replacement(lines[steps[0]], ask)
         if replaced is None:
             continue
-        indent = lines[steps[0]][: len(lines[steps[0]]) - len(lines[steps[0]].lstrip())]
         notes.append(f"`{lines[steps[0]].strip()}` -> `{'; '.join(replaced)}`: the instruction asks "
                      f"{asked_words(ask)} {ask.name}")  # fmt: skip
-        lines[steps[0] : steps[0] + 1] = [indent + line for line in replaced]
+        lines[steps[0] : steps[0] + 1] = [in_place_of(lines[steps[0]], line) for line in replaced]
     _unnamed_midpoints(lines, notes, words, names)
     return _sides_of_the_scene(lines, notes, words, names)
 
@@ -149,7 +151,7 @@ def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: li
                 isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "midpoint"
             ):
                 continue
-            ends = [_detected(a) or "" for a in node.args]
+            ends = [detected_name(a) or "" for a in node.args]
             kept = [a for a, name in zip(node.args, ends, strict=False) if name.casefold() in named]
             if len(node.args) == 2 and len(kept) == 1:
                 node.func, node.args = ast.Name("detect_objects", ast.Load()), [kept[0].args[0]]  # type: ignore[attr-defined]
@@ -158,7 +160,7 @@ def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: li
             notes.append(
                 f"`{line.strip()}` -> `{changed}`: the instruction names only one of the two objects"
             )
-            lines[index] = line[: len(line) - len(line.lstrip())] + changed
+            lines[index] = in_place_of(line, changed)
 
 
 def _sides_of_the_scene(
@@ -176,7 +178,7 @@ def _sides_of_the_scene(
         shifted = f"t = shift(t, {side!r}{f', {word!r}' if word else ''})"
         notes.append(f"`{line.strip()}` -> `{shifted}`: the instruction names no object, so {side} is a "
                      f"side of the scene")  # fmt: skip
-        lines[index] = line[: len(line) - len(line.lstrip())] + shifted
+        lines[index] = in_place_of(line, shifted)
     return "\n".join(lines), notes
 
 
@@ -219,19 +221,7 @@ def _objects(call: ast.Call | None) -> list[str]:
         return []
     point = call.args[1]
     items = point.elts if isinstance(point, ast.List | ast.Tuple) else [point]
-    return [_detected(item) or "" for item in items]
-
-
-def _detected(node: ast.expr) -> str | None:
-    if (
-        isinstance(node, ast.Call)
-        and isinstance(node.func, ast.Name)
-        and node.func.id == "detect_objects"
-        and len(node.args) == 1
-        and isinstance(node.args[0], ast.Constant)
-    ):
-        return str(node.args[0].value)
-    return None
+    return [detected_name(item) or "" for item in items]
 
 
 def step_on_object(line: str, name: str) -> bool:

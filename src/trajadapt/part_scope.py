@@ -32,7 +32,14 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import assigned_call, called_name, direction_argument, parse_code
+from trajadapt.code_parse import (
+    call_of,
+    called_name,
+    detected_name,
+    direction_argument,
+    in_place_of,
+    parse_code,
+)
 from trajadapt.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
@@ -147,22 +154,23 @@ def _first_count(clause: str) -> int:
 
 def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with the one step written for each part move replaced by that move, and a note each."""
+    words = " ".join(asked)
+    said = said_directions(words)
     lines = code.splitlines()
     notes: list[str] = []
-    if NEW_GOAL.search(" ".join(asked)):
-        _reach_the_new_goal(lines, notes, " ".join(asked))
-    for move in part_moves(" ".join(asked)):
+    if NEW_GOAL.search(words):
+        _reach_the_new_goal(lines, notes, words)
+    for move in part_moves(words):
         if move.part == "past the goal" and any(
             called_name(line) in ("extend", "append_segment") for line in lines
         ):
             continue
-        index, amount = _step_for(move, lines, said_directions(" ".join(asked)))
+        index, amount = _step_for(move, lines, said)
         if index is None:
             continue
         before = lines[index].strip()
         replaced = [f"t = {step}" for step in _against_the_rest(move, lines, index, move.call(amount))]
-        indent = lines[index][: len(lines[index]) - len(lines[index].lstrip())]
-        lines[index : index + 1] = [indent + line for line in replaced]
+        lines[index : index + 1] = [in_place_of(lines[index], line) for line in replaced]
         why = f"the instruction moves {move.part}, not the whole path"
         against = f", and {move.part} against the rest's shift" if len(replaced) > 1 else ""
         notes.append(f"`{before}` -> `{'; '.join(replaced)}`: {why}{against}")
@@ -216,27 +224,28 @@ def _reach_the_new_goal(lines: list[str], notes: list[str], words: str) -> None:
     index, call = passing[0]
     before = lines[index].strip()
     after = f"t = reach(t, {ast.unparse(call.args[1])})"
-    lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
+    lines[index] = in_place_of(lines[index], after)
     notes.append(f"`{before}` -> `{after}`: the instruction gives a new goal, so the path ends there")
+
+
+def _detect_calls(node: ast.expr) -> list[ast.Call]:
+    """Every ``detect_objects(...)`` call inside ``node``."""
+    return [
+        n
+        for n in ast.walk(node)
+        if isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and n.func.id == "detect_objects"
+    ]
 
 
 def _detected_names(call: ast.Call) -> list[str]:
     """The names the call's point argument passes to ``detect_objects``."""
-    found = [n for n in ast.walk(call.args[1]) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
-    return [
-        str(n.args[0].value)
-        for n in found
-        if isinstance(n.func, ast.Name) and n.func.id == "detect_objects" and n.args
-        and isinstance(n.args[0], ast.Constant)
-    ]  # fmt: skip
+    found = _detect_calls(call.args[1])
+    return [str(n.args[0].value) for n in found if n.args and isinstance(n.args[0], ast.Constant)]
 
 
 def _scene_point(call: ast.Call) -> bool:
     """Whether the call's point comes from ``detect_objects`` of scene objects (not the path's ends)."""
-    if len(call.args) < 2 or _on_landmark(call):
-        return False
-    names = [n for n in ast.walk(call.args[1]) if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
-    return any(n.func.id == "detect_objects" for n in names if isinstance(n.func, ast.Name))
+    return len(call.args) >= 2 and not _on_landmark(call) and bool(_detect_calls(call.args[1]))
 
 
 def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | None, ast.expr | None]:
@@ -257,19 +266,11 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
 
 
 def _calls(lines: list[str], skills: tuple[str, ...]) -> list[tuple[int, ast.Call]]:
-    found = [(i, assigned_call(line)) for i, line in enumerate(lines)]
-    return [(i, f[1]) for i, f in found if f is not None and f[2] in skills]
+    found = [(i, call_of(line, skills)) for i, line in enumerate(lines)]
+    return [(i, call) for i, call in found if call is not None]
 
 
 def _on_landmark(call: ast.Call) -> bool:
     """Whether the call's point is ``detect_objects('<the path's start or goal>')``."""
-    if len(call.args) < 2 or not isinstance(call.args[1], ast.Call):
-        return False
-    detect = call.args[1]
-    return (
-        isinstance(detect.func, ast.Name)
-        and detect.func.id == "detect_objects"
-        and len(detect.args) == 1
-        and isinstance(detect.args[0], ast.Constant)
-        and str(detect.args[0].value).casefold() in LANDMARKS
-    )
+    name = detected_name(call.args[1]) if len(call.args) > 1 else None
+    return name is not None and name.casefold() in LANDMARKS

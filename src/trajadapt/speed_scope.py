@@ -15,8 +15,8 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call
-from trajadapt.wording import SENTENCE_MARKS, SPEED_WORDS, names_in
+from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.wording import SENTENCE_MARKS, SPEED_WORDS, longest_names, names_in
 
 SPEED_STEPS = ("scale_speed", "set_speed")
 PLACE_WORDS = re.compile(
@@ -34,10 +34,7 @@ def scoped_object(words: str, names: Iterable[str]) -> str | None:
     speed_clauses = [c for c in CLAUSES.split(words) if SPEED_WORDS.search(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
-    named = names_in(speed_clauses[0], names)
-    longest = [
-        n for n in named if not any(n != other and n.casefold() in other.casefold() for other in named)
-    ]
+    longest = longest_names(names_in(speed_clauses[0], names))
     return longest[0] if len(longest) == 1 else None
 
 
@@ -55,7 +52,7 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     point = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(target)], [])
     call.keywords.append(ast.keyword("near", point))
     before, after = lines[index].strip(), ast.unparse(tree)
-    lines[index] = lines[index][: len(lines[index]) - len(lines[index].lstrip())] + after
+    lines[index] = in_place_of(lines[index], after)
     note = f"`{before}` -> `{after}`: the instruction changes the speed near {target}, not everywhere"
     return "\n".join(lines), [note]
 

@@ -15,7 +15,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, direction_argument
+from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
 from trajadapt.wording import CLAUSE_BREAKS, said_directions
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
@@ -51,7 +51,7 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
         notes.append(
             f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
         )
-        lines[vague[0]] = line[: len(line) - len(line.lstrip())] + changed
+        lines[vague[0]] = in_place_of(line, changed)
     return "\n".join(lines), notes
 
 

@@ -21,14 +21,13 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument
+from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument, in_place_of
 from trajadapt.geometry import PART_WORDS
-from trajadapt.object_asks import asked_words, object_asks, step_on_object
+from trajadapt.object_asks import SPEED_STEPS, asked_words, object_asks, step_on_object
 from trajadapt.unstated_amounts import intensity_word, speed_factor
-from trajadapt.wording import FASTER, SLOWER, said_directions, whole_words
+from trajadapt.wording import FASTER, SLOWER, longest_names, said_directions, whole_words
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
-SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
 
 
 def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
@@ -45,7 +44,7 @@ def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]
     if replaced is None:
         return code, []
     before = lines[index]
-    lines[index] = before[: len(before) - len(before.lstrip())] + replaced
+    lines[index] = in_place_of(before, replaced)
     return "\n".join(lines), [
         f"`{before.strip()}` -> `{replaced}`: the instruction names no such direction; {reason}"
     ]
@@ -53,7 +52,8 @@ def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]
 
 def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -> tuple[str | None, str]:
     """The step the words ask for in place of the shift at ``index``, and why; (None, '') for none."""
-    for ask in object_asks(words, names).values():
+    asks = object_asks(words, names).values()
+    for ask in asks:
         if ask.relation in ("closer", "away") and not any(step_on_object(x, ask.name) for x in lines):
             word = intensity_word(ask.clause)
             skill = "move_closer" if ask.relation == "closer" else "move_away"
@@ -63,7 +63,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     if (
         faster == slower
         or any(called_name(x) in SPEED_STEPS for x in lines)
-        or any(ask.relation in ("faster", "slower") for ask in object_asks(words, names).values())
+        or any(ask.relation in ("faster", "slower") for ask in asks)
     ):
         return None, ""
     part = _shift_part(lines[index]) or _part_named(words)
@@ -90,6 +90,7 @@ def _shift_part(line: str) -> str | None:
 def _part_named(words: str) -> str | None:
     """The one part of the path the words name ('middle', 'start', 'end', 'first half', ...)."""
     text = whole_words(words)
-    named = [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
-    longest = [p for p in named if not any(p != o and p in o for o in named)]
+    longest = longest_names(
+        [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
+    )
     return longest[0] if len(longest) == 1 else None

@@ -21,7 +21,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.answer_grammar import skill_parameters
-from trajadapt.code_parse import assigned_call
+from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 from trajadapt.skills.speed import SPEED_FACTORS
@@ -94,7 +94,7 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
                 f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so "
                 f"{repr(word) if word else 'the default amount'} is used"
             )
-            line = line[: len(line) - len(line.lstrip())] + changed
+            line = in_place_of(line, changed)
         lines.append(line)
     return "\n".join(lines), notes
 

@@ -46,3 +46,8 @@ def names_in(text: str, names: Iterable[str]) -> list[str]:
 def said_directions(words: str) -> set[str]:
     """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back')."""
     return {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}
+
+
+def longest_names(named: list[str]) -> list[str]:
+    """The names not inside another of them ('red box' and 'box' found: 'red box')."""
+    return [n for n in named if not any(n != o and n.casefold() in o.casefold() for o in named)]

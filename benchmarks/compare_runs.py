@@ -4,7 +4,8 @@ Run: .venv/bin/python benchmarks/compare_runs.py BEFORE_DIR AFTER_DIR [--first-a
 
 Prints, per subset and overall, how many of the common judged cases passed in each run, the median
 and 90th percentile of the LLM time per case, the mean completion tokens, and which cases were gained
-or lost. With --first-answers a case counts as passed only if it passed without a repair round (the
+or lost; then the same for each half of the cases (``trajadapt.bench.halves``: the development half
+a change was written from, the validation half it was not). With --first-answers a case counts as passed only if it passed without a repair round (the
 answer the user would have seen first).
 """
 
@@ -15,6 +16,8 @@ import json
 import statistics
 from dataclasses import dataclass
 from pathlib import Path
+
+from trajadapt.bench.halves import HALVES, half_of
 
 
 @dataclass(frozen=True)
@@ -88,6 +91,10 @@ def main() -> None:
     for subset in subsets:
         print(summary_row(subset, [k for k in common if k.startswith(subset + "/")], before, after))
     print(summary_row("all", common, before, after))
+    for half in HALVES:
+        keys = [k for k in common if half_of(k) == half]
+        if keys:
+            print(summary_row(f"{half} half", keys, before, after))
     gained = [k for k in common if after[k].passed and not before[k].passed]
     lost = [k for k in common if before[k].passed and not after[k].passed]
     print(f"\ngained ({len(gained)}): {', '.join(gained) or '-'}")

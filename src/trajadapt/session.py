@@ -17,6 +17,7 @@ from trajadapt.answer import Plan, parse_answer
 from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
+from trajadapt.clauses.draft import ClauseRequests, draft_by_clause
 from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
 from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
@@ -77,6 +78,7 @@ class SessionSettings:
     examples: int = 3
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
+    clause_steps: bool = True
 
     @classmethod
     def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
@@ -95,6 +97,7 @@ class SessionSettings:
             examples=settings.examples,
             leave_out_unasked=settings.leave_out_unasked,
             repair_contradictions=settings.repair_contradictions,
+            clause_steps=settings.clause_steps,
         )
 
     def describe(self) -> dict[str, Any]:
@@ -115,6 +118,7 @@ class SessionSettings:
             "examples": self.examples,
             "leave_out_unasked": self.leave_out_unasked,
             "repair_contradictions": self.repair_contradictions,
+            "clause_steps": self.clause_steps,
         }
 
 
@@ -322,7 +326,38 @@ class AdaptationSession:
         if not self.case.instruction:
             raise SessionStateError("the case has no instruction; give one with --instruction")
         self._start_log()
+        if self._drafts_by_clause():
+            return self._draft_by_clause()
         return self._ask("draft", self.case.instruction)
+
+    def _drafts_by_clause(self) -> bool:
+        settings = self.settings
+        return (
+            settings.mode == "skills"
+            and settings.grammar
+            and settings.clause_steps
+            and self.backend.follows_grammar
+        )
+
+    def _draft_by_clause(self) -> Plan:
+        """The first answer written one clause at a time (``trajadapt.clauses``), read and recorded."""
+        how = ClauseRequests(
+            self.settings.axes, self.settings.examples, True, self.settings.temperature, self.settings.seed
+        )
+        drafted = draft_by_clause(self.case, self._complete, how)
+        for step in drafted.steps:
+            self._log("clause", "\n".join(step.lines), {
+                "user_text": step.clause,
+                "request": [{"role": m.role, "content": m.content} for m in step.request.messages],
+                "answer": step.completion.text if step.completion else None,
+            }, step.error, {"llm": step.completion.duration_s if step.completion else None})  # fmt: skip
+        if not any(step.lines for step in drafted.steps):
+            return self._ask("draft", self.case.instruction)  # no clause got a step: the whole answer
+        plan = drafted.replanned(self._without_unasked_steps(drafted.plan).code)
+        self.messages.append(ChatMessage("assistant", plan.raw_text))
+        self._record(Turn("draft", self.case.instruction, plan, drafted.completion))
+        self._checkpoints.append((len(self.messages), len(self.turns), plan))
+        return plan
 
     def feedback(self, text: str) -> Plan:
         """Send the user's feedback with the original instruction and previous plan; get a new plan."""
@@ -485,9 +520,10 @@ class AdaptationSession:
         self._left_out = left_out + replaced + restored + heights + scoped + reread + guessed + placed
         return replace(plan, code=code) if self._left_out else plan
 
-    def _complete(self) -> Completion:
+    def _complete(self, request: ChatRequest | None = None) -> Completion:
+        """Send ``request`` (by default the conversation so far) and count its time and tokens."""
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
-        request = ChatRequest(
+        request = request or ChatRequest(
             messages=tuple(self.messages),
             temperature=self.settings.temperature,
             max_tokens=self.settings.max_tokens,

@@ -47,6 +47,9 @@ class Settings:
             distance the instruction never gives by its vague word or the default, with a review note;
             also replace a step that does something other than what its clause asks (a part of the
             path, a speed near an object, a side, closer/away, a stated amount: see the README).
+        clause_steps: in skills mode with a grammar, write the first answer clause by clause: one
+            request per clause of the instruction, its step limited to that clause's objects and
+            numbers, the plan built from the steps (``trajadapt.clauses``).
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
@@ -69,6 +72,7 @@ class Settings:
     examples: int = 3
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
+    clause_steps: bool = True
     robot: str = "none"
 
     @property
@@ -97,6 +101,7 @@ ENV_FIELDS = {
     "examples": int,
     "leave_out_unasked": bool,
     "repair_contradictions": bool,
+    "clause_steps": bool,
     "robot": str,
 }
 

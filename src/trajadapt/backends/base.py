@@ -90,6 +90,15 @@ class Backend(ABC):
             BackendError: or a subclass, with the next step in the message.
         """
 
+    @property
+    def follows_grammar(self) -> bool:
+        """Whether answers keep to a request's grammar (constrained decoding).
+
+        Then a request may admit only what one clause asks (``trajadapt.clauses``). Backends that send
+        the grammar say so.
+        """
+        return False
+
     def describe(self) -> str:
         """One line for ``trajadapt backends``: where answers come from."""
         return f"{self.name}: model {self.model}"

@@ -139,12 +139,18 @@ class LocalBackend(Backend):
         self._llama = llama
         self._lock = threading.Lock()  # one llama.cpp context: one request at a time
         self._grammars: dict[str, Any] = {}
+        self._prefix = ""  # the fixed first message the context was last used with
 
     @property
     def model(self) -> str:
         """The GGUF file name."""
         path = self.options.model_path
         return Path(path).name if path else MODEL_FILENAME
+
+    @property
+    def follows_grammar(self) -> bool:
+        """llama.cpp constrains decoding to the request's grammar unless ``grammar`` is off."""
+        return bool(self.options.grammar)
 
     @property
     def threads(self) -> ThreadLayout:
@@ -218,6 +224,9 @@ class LocalBackend(Backend):
         prefix = request.messages[0].content if request.messages else ""
         with self._lock:
             started = time.perf_counter()
+            if states and prefix != self._prefix:
+                llama.reset()  # another fixed prefix (clause steps, then a repair): restore, do not re-read
+            self._prefix = prefix
             restored = states.restore(llama, prefix) if states else 0
             chunks, first_token_s = self._stream(llama, request)
             duration = time.perf_counter() - started

@@ -67,6 +67,11 @@ class OpenAICompatBackend(Backend):
         """Server and model."""
         return f"openai: model {self.model} at {self.options.base_url}"
 
+    @property
+    def follows_grammar(self) -> bool:
+        """A server follows the grammar only when ``grammar_field`` says where to send it."""
+        return bool(self.options.grammar_field)
+
     def complete(self, request: ChatRequest) -> Completion:
         """Send ``request`` as one chat completion and map every failure to a BackendError."""
         started = time.perf_counter()

@@ -1,0 +1,125 @@
+"""The clauses of an instruction: the units that each get their own step.
+
+One splitter for the whole instruction. It breaks at punctuation and at the words that join two
+requests (``and``, ``then``, ``but``, ``also``), then joins back what is not a request of its own:
+
+- a piece that only names things ("between the chair *and the table*", "left *and right*"), or
+  only qualifies the one before it ("*, a lot further*", "*, bulging upwards*", "*and keep it smooth*"
+  is a request; "*and slowly*" is not);
+- a lead-in that sets when or where the next request applies ("*after reaching the goal,* go left").
+
+"while" and "as" do not break a clause ("hurry while passing the printer" asks one thing); a
+clause may need two steps ("go up by 0.1 at a constant speed of 0.2"), so a clause is not a step.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from trajadapt.wording import whole_words
+
+BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
+"""Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
+
+LEAD_INS = re.compile(
+    r"^(?:after|once|when|whenever|before|upon|until|as soon as|at the end|at the start|in the end"
+    r"|finally|first|firstly|afterwards|near|around|close to|next to)\b",
+    re.I,
+)
+"""Words that open a piece saying when or where the following request applies."""
+
+FILLER = frozenset(
+    "a an the of to and or by from with as you it its is are be all way both sides side more much "
+    "very bit little lot slightly than too so just then also please".split()
+)
+"""Words that carry no request of their own."""
+
+AS_YOU_GO = re.compile(r" as you (?:go|move|travel|pass) ")
+
+DIRECTION_WORDS = frozenset(
+    "left right up down upward upwards downward downwards front back forward forwards backward backwards "
+    "above below top bottom higher lower further farther closer nearer".split()
+)
+
+
+def split_clauses(instruction: str, names: Sequence[str] = ()) -> tuple[str, ...]:
+    """The instruction's clauses in the user's order, each a request of its own.
+
+    >>> split_clauses("go left by 20 and slow down near the box", ["box"])
+    ('go left by 20', 'slow down near the box')
+    >>> split_clauses("pass between the chair and the table", ["chair", "table"])
+    ('pass between the chair and the table',)
+    """
+    pieces = _pieces(instruction)
+    clauses: list[str] = []
+    pending = ""
+    for joiner, piece in pieces:
+        if pending:
+            piece, pending = f"{pending} {piece}", ""
+        elif (
+            clauses
+            and joiner.strip() in ("", ",", "and", "but", "also")
+            and not _asks_something(piece, names)
+        ):
+            clauses[-1] = f"{clauses[-1]}{joiner}{piece}"
+            continue
+        if LEAD_INS.match(piece) and _is_only_a_setting(piece, names):
+            pending = piece + ","
+            continue
+        clauses.append(piece)
+    if pending:
+        clauses.append(pending.rstrip(","))
+    return tuple(clauses) or (instruction.strip(),)
+
+
+def _pieces(instruction: str) -> list[tuple[str, str]]:
+    """(what joined it to the piece before, the piece) for each non-empty piece."""
+    pieces: list[tuple[str, str]] = []
+    position, joiner = 0, ""
+    for found in BREAKS.finditer(instruction):
+        piece = instruction[position : found.start()].strip()
+        if piece:
+            pieces.append((joiner, piece))
+        joiner = found.group(0) if found.group(0) in ",;" else f" {found.group(0)} "
+        position = found.end()
+    rest = instruction[position:].strip()
+    if rest:
+        pieces.append((joiner, rest))
+    return [(j if j.startswith(" ") else f"{j} ", p) for j, p in pieces]
+
+
+def _content_words(piece: str, names: Sequence[str]) -> list[str]:
+    """The words of ``piece`` that are not an object's name or filler."""
+    text = AS_YOU_GO.sub(" ", whole_words(piece))
+    for name in sorted(names, key=len, reverse=True):
+        spoken = whole_words(name)
+        if spoken.strip():
+            text = text.replace(spoken, " ")
+    return [word for word in text.split() if word not in FILLER and not word.replace(".", "").isdigit()]
+
+
+def _asks_something(piece: str, names: Sequence[str]) -> bool:
+    """Whether a piece is a request of its own.
+
+    It has a word beyond names, filler, directions and amounts, and does not start with a word that
+    qualifies the piece before it (an -ing or -ly word).
+    """
+    words = _content_words(piece, names)
+    if not [w for w in words if w not in DIRECTION_WORDS]:
+        return False
+    first = piece.split()[0].lower()
+    return not (first.endswith("ing") or first.endswith("ly"))
+
+
+def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:
+    """A lead-in piece that says when or where but asks nothing itself ('after reaching the goal')."""
+    words = _content_words(LEAD_INS.sub("", piece), names)
+    return all(w.endswith(("ing", "ed")) or w in SETTING_WORDS for w in words)
+
+
+SETTING_WORDS = frozenset(
+    "goal start end position destination target point path trajectory arriving arrive reach reached "
+    "done finished there middle halfway".split()
+)
+"""Words a lead-in may have besides its opening word and object names."""

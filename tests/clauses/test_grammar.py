@@ -1,0 +1,37 @@
+from trajadapt.clauses.grammar import allowed_numbers, clause_objects, stated_numbers, step_grammar
+
+NAMES = ["kettle", "lamp", "red mug"]
+
+
+def test_a_clause_names_only_its_own_objects():
+    clauses = ["go faster near the kettle", "slower near the lamp"]
+    assert clause_objects(clauses, 0, NAMES) == ("kettle",)
+    assert clause_objects(clauses, 1, NAMES) == ("lamp",)
+
+
+def test_a_shorter_word_for_a_name_and_a_word_pointing_back_find_their_object():
+    assert clause_objects(["approach the mug"], 0, NAMES) == ("red mug",)
+    assert clause_objects(["reach the lamp", "wait there for 5 steps"], 1, NAMES) == ("lamp",)
+
+
+def test_a_clause_naming_nothing_may_name_no_object():
+    assert clause_objects(["go slower by half", "keep away from the kettle"], 0, NAMES) == ()
+
+
+def test_numbers_are_the_clauses_own_and_the_phrase_tables():
+    assert stated_numbers("go left by .5 and up by 20, not 3rd") == ("0.5", "20")
+    numbers = allowed_numbers("go left by 0.3")
+    assert "0.3" in numbers and "0.65" in numbers and "0.2" not in numbers
+
+
+def test_the_grammar_admits_the_clauses_step_and_refuses_the_others():
+    grammar = step_grammar(("lamp",), allowed_numbers("slower near the lamp"))
+    assert grammar.matches("t = scale_speed(t, 0.65, near=detect_objects('lamp'))")
+    assert grammar.matches("t = scale_speed(t, 0.65, near=detect_objects('lamp'))\nt = smooth(t)")
+    assert not grammar.matches(
+        "t = scale_speed(t, 0.65, near=detect_objects('kettle'))"
+    )  # another clause's object
+    assert not grammar.matches("t = shift(t, 'left', 0.2)")  # a number nobody said
+    assert grammar.matches("t = shift(t, 'left', 'a bit')")
+    assert not grammar.matches("t = smooth(t)\nt = smooth(t)\nt = smooth(t)")  # two steps at most
+    assert "\n" not in grammar.to_gbnf().split("::=")[1].split("\n")[0].strip('"')

@@ -1,0 +1,61 @@
+import pytest
+
+from trajadapt.clauses.split import split_clauses
+
+NAMES = ["box", "chair", "table", "lamp", "red mug"]
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        ("go left by 20 and slow down near the box", ("go left by 20", "slow down near the box")),
+        (
+            "Slow down near the lamp, then stop when you reach the table.",
+            ("Slow down near the lamp", "stop when you reach the table"),
+        ),
+        (
+            "walk faster in the middle and slower near the box",
+            ("walk faster in the middle", "slower near the box"),
+        ),
+        # paraphrases none of the sets has: other joins, other order
+        (
+            "reduce speed by the lamp; also keep more distance from the chair",
+            ("reduce speed by the lamp", "keep more distance from the chair"),
+        ),
+        ("First hug the table. Then hurry past the box!", ("First hug the table", "hurry past the box")),
+        ("shift up by 0.1 but keep the goal where it is", ("shift up by 0.1", "keep the goal where it is")),
+    ],
+)
+def test_each_request_is_a_clause(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "pass between the chair and the table",
+        "Keep a distance of at least 0.2 from the chair and the table",
+        "weave left and right as you go",
+        "Go up by 0.1 at a constant speed of 0.2",
+        "hurry while passing the red mug",
+        "stay well clear of the lamp, a lot further",
+        "arc over the middle, bulging upwards",
+        "move 0.5 to the left and 0.3 up",
+    ],
+)
+def test_what_only_names_or_qualifies_stays_in_its_clause(words):
+    assert split_clauses(words, NAMES) == (words,)
+
+
+def test_a_lead_in_goes_with_the_request_it_sets():
+    assert split_clauses("after reaching the goal, go left by 0.2", NAMES) == (
+        "after reaching the goal, go left by 0.2",
+    )
+    assert split_clauses("once there, circle the lamp twice", NAMES) == ("once there, circle the lamp twice",)
+
+
+def test_decimal_points_do_not_break_and_nothing_is_lost():
+    words = "Go right by 0.3. Then go down by .2 and slow down near the red mug"
+    clauses = split_clauses(words, NAMES)
+    assert clauses == ("Go right by 0.3", "go down by .2", "slow down near the red mug")
+    assert split_clauses("  ", NAMES) == ("",)

@@ -17,8 +17,26 @@ SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
 CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I)
 """Where one clause of an instruction ends and the next begins."""
 
-SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
+SPEED_WORDS = re.compile(
+    r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure|accelerat|decelerat)", re.I
+)
 """Word stems that make a clause about speed."""
+
+PLACE_WORDS = re.compile(
+    r"\b(?:distance|clear|avoid|away|reach|pass|through|between|around|circle|spiral|loop|extend|continu"
+    r"|further|farther|closer|nearer|approach|shift|curv|bend|arc|zig|weav|smooth|height|altitude|above"
+    r"|below|over|under|rotat|turn|tilt|scale|waypoint|side|towards?|hug|bow|offset)\w*",
+    re.I,
+)
+"""Word stems that ask where the path goes (its place or shape), not how fast."""
+
+
+def asked_kinds(words: str) -> frozenset[str]:
+    """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
+    kinds = {"pace"} if SPEED_WORDS.search(words) else set()
+    if PLACE_WORDS.search(words) or said_directions(words):
+        kinds.add("place")
+    return frozenset(kinds)
 
 
 FASTER = re.compile(

@@ -8,6 +8,12 @@ requests (``and``, ``then``, ``but``, ``also``), then joins back what is not a r
   is a request; "*and slowly*" is not);
 - a lead-in that sets when or where the next request applies ("*after reaching the goal,* go left").
 
+A participle that makes a second request breaks too: after a request that is complete (it ends
+on a direction, a number or an object: "go slightly upwards *keeping* a smaller distance from the
+chair") and, after a comma, where it asks about another kind of thing than the piece before ("visit
+the sink, *slowing* down there" asks a pace after a place; "arc over the middle, *bulging* upwards"
+only says more about the place).
+
 "while" and "as" do not break a clause ("hurry while passing the printer" asks one thing); a
 clause may need two steps ("go up by 0.1 at a constant speed of 0.2"), so a clause is not a step.
 """
@@ -17,7 +23,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from trajadapt.wording import whole_words
+from trajadapt.wording import asked_kinds, names_in, said_directions, whole_words
 
 BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
@@ -51,17 +57,15 @@ def split_clauses(instruction: str, names: Sequence[str] = ()) -> tuple[str, ...
     >>> split_clauses("pass between the chair and the table", ["chair", "table"])
     ('pass between the chair and the table',)
     """
-    pieces = _pieces(instruction)
+    pieces = [
+        part for joiner, piece in _pieces(instruction) for part in _at_participles(joiner, piece, names)
+    ]
     clauses: list[str] = []
     pending = ""
     for joiner, piece in pieces:
         if pending:
             piece, pending = f"{pending} {piece}", ""
-        elif (
-            clauses
-            and joiner.strip() in ("", ",", "and", "but", "also")
-            and not _asks_something(piece, names)
-        ):
+        elif clauses and not _starts_a_request(joiner, piece, clauses[-1], names):
             clauses[-1] = f"{clauses[-1]}{joiner}{piece}"
             continue
         if LEAD_INS.match(piece) and _is_only_a_setting(piece, names):
@@ -87,6 +91,57 @@ def _pieces(instruction: str) -> list[tuple[str, str]]:
     if rest:
         pieces.append((joiner, rest))
     return [(j if j.startswith(" ") else f"{j} ", p) for j, p in pieces]
+
+
+def _at_participles(joiner: str, piece: str, names: Sequence[str]) -> list[tuple[str, str]]:
+    """The piece cut before each participle that follows a complete request (joiner ``PARTICIPLE``)."""
+    words = piece.split(" ")
+    ends = {word for name in names for word in whole_words(name).split()[-1:]}
+    cuts = [i for i in range(1, len(words)) if _is_participle(words[i]) and _completes(words[i - 1], ends)]
+    parts, start, glue = [], 0, joiner
+    for cut in cuts:
+        parts.append((glue, " ".join(words[start:cut])))
+        start, glue = cut, PARTICIPLE
+    parts.append((glue, " ".join(words[start:])))
+    return [(glue, part) for glue, part in parts if part.strip()]
+
+
+NOT_PARTICIPLES = frozenset(
+    "during thing nothing something anything everything building ceiling morning evening string".split()
+)
+
+
+def _is_participle(word: str) -> bool:
+    """An -ing verb form ('keeping', 'going'), not a noun or preposition that ends so ('during')."""
+    bare = word.strip(".,;:!?").lower()
+    return bare.endswith("ing") and len(bare) >= 5 and bare not in NOT_PARTICIPLES
+
+
+PARTICIPLE = " "
+"""The joiner of a piece cut off before a participle."""
+
+
+def _completes(word: str, object_ends: set[str]) -> bool:
+    """Whether a request can end on this word: a direction, a number, an amount or an object's name."""
+    bare = word.strip(".,;:!?").lower()
+    return (
+        bare in DIRECTION_WORDS
+        or bare in object_ends
+        or bare.replace(".", "", 1).isdigit()
+        or bare in {"slightly", "more", "less", "much", "lot", "bit"}
+    )
+
+
+def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[str]) -> bool:
+    """Whether a piece is a clause of its own rather than more words of the previous one."""
+    if joiner.strip() not in ("", ",", "and", "but", "also"):
+        return True  # a sentence mark, "then"
+    participle = _is_participle(piece.split()[0])
+    if participle and joiner == PARTICIPLE:
+        return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
+    if participle and joiner.strip() == ",":
+        return bool(asked_kinds(piece) - asked_kinds(previous))
+    return _asks_something(piece, names)
 
 
 def _content_words(piece: str, names: Sequence[str]) -> list[str]:
@@ -123,3 +178,22 @@ SETTING_WORDS = frozenset(
     "done finished there middle halfway".split()
 )
 """Words a lead-in may have besides its opening word and object names."""
+
+
+KEEPING = re.compile(
+    r"\b(?:keep\w*|maintain\w*|retain\w*|preserv\w*|same|fixed|unchanged|unaltered|untouched|as (?:it|they) (?:is|are)"
+    r"|where (?:it|they) (?:is|are)|in place|do(?:n't| not) (?:move|change))\b",
+    re.I,
+)
+
+
+def only_keeps(clause: str, names: Sequence[str] = ()) -> bool:
+    """Whether the clause only asks that something stay as it is ("keeping the start fixed", "the goal
+    stays where it is"): it needs no step of its own. A clause that names an object, a direction, a
+    pace or a place ("keep 0.2 from the box", "keep left") asks more than that."""
+    return (
+        bool(KEEPING.search(clause))
+        and not asked_kinds(clause)
+        and not names_in(clause, names)
+        and not re.search(r"\d", clause)
+    )

@@ -17,6 +17,7 @@ from trajadapt.answer import Plan, parse_answer
 from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
+from trajadapt.clauses.check import clause_findings
 from trajadapt.clauses.draft import ClauseRequests, draft_by_clause
 from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
 from trajadapt.effect import Effect, contradictions, measure_effect
@@ -36,6 +37,7 @@ from trajadapt.prompts import first_messages, render
 from trajadapt.review import ReviewNote, review_notes, validate_result
 from trajadapt.robot_limits import robot_constraints
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
+from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
@@ -79,6 +81,7 @@ class SessionSettings:
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = True
+    clause_check: bool = True
 
     @classmethod
     def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
@@ -98,6 +101,7 @@ class SessionSettings:
             leave_out_unasked=settings.leave_out_unasked,
             repair_contradictions=settings.repair_contradictions,
             clause_steps=settings.clause_steps,
+            clause_check=settings.clause_check,
         )
 
     def describe(self) -> dict[str, Any]:
@@ -119,6 +123,7 @@ class SessionSettings:
             "leave_out_unasked": self.leave_out_unasked,
             "repair_contradictions": self.repair_contradictions,
             "clause_steps": self.clause_steps,
+            "clause_check": self.clause_check,
         }
 
 
@@ -344,7 +349,8 @@ class AdaptationSession:
         how = ClauseRequests(
             self.settings.axes, self.settings.examples, True, self.settings.temperature, self.settings.seed
         )
-        drafted = draft_by_clause(self.case, self._complete, how)
+        check = self._clause_findings if self.settings.clause_check else None
+        drafted = draft_by_clause(self.case, self._complete, how, check)
         for step in drafted.steps:
             self._log("clause", "\n".join(step.lines), {
                 "user_text": step.clause,
@@ -354,6 +360,12 @@ class AdaptationSession:
         if not any(step.lines for step in drafted.steps):
             return self._ask("draft", self.case.instruction)  # no clause got a step: the whole answer
         plan = drafted.replanned(self._without_unasked_steps(drafted.plan).code)
+        self._left_out += [
+            f"\u201c{step.clause}\u201d: asked once more, as its first step contradicted the words"
+            + (f"; still: {'; '.join(step.findings)}" if step.findings else "")
+            for step in drafted.steps
+            if step.asked_again
+        ]
         self.messages.append(ChatMessage("assistant", plan.raw_text))
         self._record(Turn("draft", self.case.instruction, plan, drafted.completion))
         self._checkpoints.append((len(self.messages), len(self.turns), plan))
@@ -519,6 +531,21 @@ class AdaptationSession:
         code, placed = localize_speed(code, self._asked, names)
         self._left_out = left_out + replaced + restored + heights + scoped + reread + guessed + placed
         return replace(plan, code=code) if self._left_out else plan
+
+    def _clause_findings(self, clause: str, lines: tuple[str, ...]) -> list[str]:
+        """What a clause's lines, run alone on the original path, contradict in the clause's words."""
+        code = "\n".join(["t = get_trajectory()", *lines, f"{RESULT_VARIABLE} = t"])
+        options = ExecutionOptions(skills=True, positive_x=self.settings.axes.positive_x, accept_last=True)
+        result = self.sandbox.run(code, self.case.trajectory, self.case.scene, options)
+        self._exec_s += result.duration_s
+        if result.error is not None or result.rows is None:
+            return [f"the step failed: {result.error.describe() if result.error else 'no trajectory'}"]
+        try:
+            trajectory = validate_result(result.rows)
+        except InvalidTrajectory as exc:
+            return [f"the step gave no valid trajectory: {exc}"]
+        axes = self.settings.axes.frame
+        return clause_findings(clause, measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes), axes)
 
     def _complete(self, request: ChatRequest | None = None) -> Completion:
         """Send ``request`` (by default the conversation so far) and count its time and tokens."""

@@ -50,6 +50,9 @@ class Settings:
         clause_steps: in skills mode with a grammar, write the first answer clause by clause: one
             request per clause of the instruction, its step limited to that clause's objects and
             numbers, the plan built from the steps (``trajadapt.clauses``).
+        clause_check: with ``clause_steps``, run each clause's step alone, and when its measured
+            effect contradicts the clause's words, ask for that clause once more with what it did;
+            the answer with fewer contradictions is kept.
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
@@ -73,6 +76,7 @@ class Settings:
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = True
+    clause_check: bool = True
     robot: str = "none"
 
     @property
@@ -102,6 +106,7 @@ ENV_FIELDS = {
     "leave_out_unasked": bool,
     "repair_contradictions": bool,
     "clause_steps": bool,
+    "clause_check": bool,
     "robot": str,
 }
 

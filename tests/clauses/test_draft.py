@@ -134,3 +134,40 @@ def test_a_step_a_reader_changed_is_explained_again():
     assert "0.65" in changed.steps[1] and changed.steps[1].endswith("\u201cslow down near the lamp\u201d")
     fewer = drafted.replanned("t = get_trajectory()\nt = shift(t, 'left', 0.1)\nmodified_trajectory = t")
     assert len(fewer.steps) == 1 and "\u2014 for" not in fewer.steps[0]
+
+
+def test_a_line_repeating_an_earlier_clauses_step_is_left_out():
+    backend = GrammarFollowing(answers=["t = shift(t, 'left', 0.1)", "t = shift(t, 'left', 0.1)\nt = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]))
+    assert [s.lines for s in drafted.steps] == [
+        ("t = shift(t, 'left', 0.1)",),
+        ("t = scale_speed(t, 0.65, near=detect_objects('lamp'))",),
+    ]
+
+
+def test_a_step_contradicting_its_words_is_asked_once_more_and_the_better_kept():
+    backend = GrammarFollowing(answers=["t = scale_speed(t, 1.4)", "t = shift(t, 'left', 0.1)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    findings = {"t = scale_speed(t, 1.4)": ["the step changed only the speed"]}
+    drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]),
+                              check=lambda clause, lines: findings.get(lines[0], []))
+    first = drafted.steps[0]
+    assert first.lines == ("t = shift(t, 'left', 0.1)",) and first.asked_again and not first.findings
+    retry = backend.requests[1].messages
+    assert retry[-2].content == "t = scale_speed(t, 1.4)" and "changed only the speed" in retry[-1].content
+    assert len(drafted.completion.text.split("Words:")) == 3 and len(first.completions) == 2
+
+
+def test_a_second_answer_no_better_leaves_the_first():
+    backend = GrammarFollowing(answers=["t = shift(t, 'right', 0.1)", "t = smooth(t)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]),
+                              check=lambda clause, lines: ["wrong way"] if "left" in clause else [])
+    assert drafted.steps[0].lines == ("t = shift(t, 'right', 0.1)",) and drafted.steps[0].findings == ("wrong way",)
+
+
+def test_the_session_checks_each_clause_in_the_sandbox(sandbox):
+    backend = GrammarFollowing(answers=["t = shift(t, 'right', 0.1)", "t = shift(t, 'left', 0.1)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    session = AdaptationSession(two_clause_case(), backend, sandbox, SessionSettings())
+    plan = session.draft()
+    assert "shift(t, 'left', 0.1)" in plan.code and "'right'" not in plan.code
+    assert "says left" in backend.requests[1].messages[-1].content
+    assert any("asked once more" in note for note in session._left_out)

@@ -1,4 +1,4 @@
-from trajadapt.clauses.grammar import allowed_numbers, clause_objects, stated_numbers, step_grammar
+from trajadapt.clauses.grammar import allowed_numbers, clause_objects, names_landmarks, stated_numbers, step_grammar
 
 NAMES = ["kettle", "lamp", "red mug"]
 
@@ -35,3 +35,13 @@ def test_the_grammar_admits_the_clauses_step_and_refuses_the_others():
     assert grammar.matches("t = shift(t, 'left', 'a bit')")
     assert not grammar.matches("t = smooth(t)\nt = smooth(t)\nt = smooth(t)")  # two steps at most
     assert "\n" not in grammar.to_gbnf().split("::=")[1].split("\n")[0].strip('"')
+
+
+def test_a_clause_naming_no_object_and_no_end_can_point_at_nothing_by_name():
+    grammar = step_grammar((), allowed_numbers("go slower by half"), landmarks=False)
+    assert grammar.matches("t = scale_speed(t, 0.5)")
+    assert not grammar.matches("t = scale_speed(t, 0.5, near=detect_objects('start'))")
+    assert step_grammar((), allowed_numbers("slow down towards the end"), landmarks=True).matches(
+        "t = scale_speed(t, 0.5, near=detect_objects('goal'))"
+    )
+    assert names_landmarks("once you reach the destination") and not names_landmarks("go slower by half")

@@ -15,19 +15,28 @@ from __future__ import annotations
 import ast
 import json
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from trajadapt.answer import Plan
 from trajadapt.backends.base import ChatMessage, ChatRequest, Completion, Usage
 from trajadapt.case import Case
 from trajadapt.clauses.examples import render_clause_examples
-from trajadapt.clauses.grammar import MAX_STEPS_PER_CLAUSE, allowed_numbers, clause_objects, step_grammar
+from trajadapt.clauses.grammar import (
+    MAX_STEPS_PER_CLAUSE,
+    allowed_numbers,
+    clause_objects,
+    names_landmarks,
+    step_grammar,
+)
 from trajadapt.clauses.split import split_clauses
 from trajadapt.errors import BackendError
 from trajadapt.geometry import AxisConvention
 from trajadapt.prompts import describe_environment, render, render_functions, summarize_trajectory
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.skills.explain import explain_code
+
+ClauseCheck = Callable[[str, tuple[str, ...]], list[str]]
+"""What a clause's lines, run alone on the original path, contradict in the clause's words."""
 
 CLAUSE_MAX_TOKENS = 96
 """Two skill lines fit in about 50 tokens; a backend that ignores the grammar stops here."""
@@ -42,6 +51,16 @@ class ClauseStep:
     request: ChatRequest
     completion: Completion | None
     error: str | None = None
+    findings: tuple[str, ...] = ()
+    """What the kept lines, run alone, still contradict in the clause's words (``ClauseCheck``)."""
+    asked_again: bool = False
+    earlier: tuple[Completion, ...] = ()
+    """Answers given before the kept one (a step asked again)."""
+
+    @property
+    def completions(self) -> tuple[Completion, ...]:
+        """Every answer this clause got, the kept one last."""
+        return (*self.earlier, *((self.completion,) if self.completion else ()))
 
 
 @dataclass(frozen=True)
@@ -58,7 +77,7 @@ class ClauseDraft:
     @property
     def completion(self) -> Completion:
         """All clause exchanges as one completion: texts one after the other, usage and time summed."""
-        done = [step.completion for step in self.steps if step.completion is not None]
+        done = [completion for step in self.steps for completion in step.completions]
         return Completion(
             text="\n\n".join(f"Words: {s.clause}\n{s.completion.text}" for s in self.steps if s.completion),
             model=done[0].model if done else "",
@@ -79,6 +98,8 @@ class ClauseRequests:
     grammar: bool = True
     temperature: float = 0.0
     seed: int | None = 0
+    whole_instruction: bool = True
+    """Show the whole instruction before the clause's words (context), or only the clause (no cross-talk)."""
 
 
 def clause_system_prompt(axes: AxisConvention) -> str:
@@ -94,11 +115,11 @@ def clause_request(case: Case, clauses: Sequence[str], index: int, how: ClauseRe
         "clause_task",
         environment=describe_environment(case),
         trajectory=summarize_trajectory(case.trajectory),
-        instruction=case.instruction,
+        instruction=f"INSTRUCTION: {case.instruction}\n\n" if how.whole_instruction else "",
         examples=render_clause_examples(clause, how.examples, names),
         clause=clause,
     )
-    grammar = step_grammar(clause_objects(clauses, index, names), allowed_numbers(clause))
+    grammar = step_grammar(clause_objects(clauses, index, names), allowed_numbers(clause), names_landmarks(clause))
     return ChatRequest(
         messages=(ChatMessage("system", clause_system_prompt(how.axes)), ChatMessage("user", task)),
         temperature=how.temperature,
@@ -129,20 +150,57 @@ def step_lines(text: str) -> tuple[str, ...]:
 
 
 def draft_by_clause(
-    case: Case, complete: Callable[[ChatRequest], Completion], how: ClauseRequests
+    case: Case,
+    complete: Callable[[ChatRequest], Completion],
+    how: ClauseRequests,
+    check: ClauseCheck | None = None,
 ) -> ClauseDraft:
-    """Ask for each clause's step in turn and compose them; a clause whose request fails gets none."""
+    """Ask for each clause's step in turn and compose them.
+
+    A clause whose request fails gets no step; a line the same as an earlier clause's is that
+    clause's step written again ("shift left slightly and extend it to reach the clock" gave the
+    second clause the first one's shift and an extension): it is left out. With ``check``, a step
+    that contradicts its clause's words goes back once with the findings, and the answer with fewer
+    findings is kept.
+    """
     clauses = split_clauses(case.instruction, [obj.name for obj in case.scene.objects])
-    steps = []
+    steps: list[ClauseStep] = []
     for index, clause in enumerate(clauses):
-        request = clause_request(case, clauses, index, how)
-        try:
-            completion = complete(request)
-        except BackendError as exc:
-            steps.append(ClauseStep(clause, (), request, None, str(exc)))
-            continue
-        steps.append(ClauseStep(clause, step_lines(completion.text), request, completion))
+        taken = {line for step in steps for line in step.lines}
+        step = _step_for(clause, clause_request(case, clauses, index, how), complete, taken)
+        if check is not None and step.lines:
+            step = _checked(step, complete, check, taken)
+        steps.append(step)
     return ClauseDraft(compose_plan(steps), tuple(steps))
+
+
+def _step_for(
+    clause: str, request: ChatRequest, complete: Callable[[ChatRequest], Completion], taken: set[str]
+) -> ClauseStep:
+    try:
+        completion = complete(request)
+    except BackendError as exc:
+        return ClauseStep(clause, (), request, None, str(exc))
+    lines = tuple(line for line in step_lines(completion.text) if line not in taken)  # another clause's step
+    return ClauseStep(clause, lines, request, completion)
+
+
+def _checked(
+    step: ClauseStep, complete: Callable[[ChatRequest], Completion], check: ClauseCheck, taken: set[str]
+) -> ClauseStep:
+    """The step, or its second answer when the first contradicts the words and the second less."""
+    findings = check(step.clause, step.lines)
+    if not findings or step.completion is None:
+        return step
+    retry = render("clause_retry", findings="; ".join(findings), clause=step.clause)
+    request = replace(step.request, messages=(
+        *step.request.messages, ChatMessage("assistant", step.completion.text), ChatMessage("user", retry)
+    ))  # fmt: skip
+    second = _step_for(step.clause, request, complete, taken)
+    second_findings = check(second.clause, second.lines) if second.lines else [*findings, "no step"]
+    if len(second_findings) < len(findings):
+        return replace(second, findings=tuple(second_findings), asked_again=True, earlier=(step.completion,))
+    return replace(step, findings=tuple(findings), asked_again=True, earlier=second.completions)
 
 
 def compose_plan(steps: Sequence[ClauseStep]) -> Plan:

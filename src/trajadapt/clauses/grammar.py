@@ -14,7 +14,8 @@ from collections.abc import Sequence
 from functools import lru_cache
 
 from trajadapt.answer_grammar import call_rule, is_statement_skill, value_rules
-from trajadapt.gbnf import Grammar, Lit, Node, Opt, Ref, alt, seq
+from trajadapt.gbnf import Alt, Grammar, Lit, Node, Opt, Ref, alt, seq
+from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.skills import SKILLS
 from trajadapt.skills.speed import SPEED_FACTORS
 from trajadapt.wording import names_in, whole_words
@@ -24,6 +25,11 @@ MAX_STEPS_PER_CLAUSE = 2
 
 PLAIN_NUMBERS = ("0", "0.5", "1", "2")
 NUMBER = re.compile(r"(?<![\w.])-?(?:\d+(?:\.\d+)?|\.\d+)(?![\w.]*[a-z])", re.I)
+LANDMARK_WORDS = re.compile(
+    r"\b(?:" + "|".join(sorted({n.split()[0] for n in START_NAMES + GOAL_NAMES}, key=len, reverse=True)) + r")\w*",
+    re.I,
+)
+"""Words that name the path's own start or goal ('starting', 'end', 'destination')."""
 POINTING_BACK = re.compile(r"\b(?:it|its|there|them|that|this|these|those|the same)\b", re.I)
 
 
@@ -64,9 +70,18 @@ def _referred(clause: str, names: Sequence[str]) -> list[str]:
     return [name for name in names if len(head := name.split()[-1]) > 2 and whole_words(head) in words]
 
 
+def names_landmarks(clause: str) -> bool:
+    """Whether the clause speaks of the path's start or goal, so that a step may point at them."""
+    return bool(LANDMARK_WORDS.search(clause))
+
+
 @lru_cache(maxsize=256)
-def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...]) -> Grammar:
-    """One or two lines ``t = <skill>(t, ...)`` with these objects and numbers (cached)."""
+def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool = True) -> Grammar:
+    """One or two lines ``t = <skill>(t, ...)`` with these objects and numbers (cached).
+
+    With no object and no ``landmarks``, a step cannot point at anything by name: no ``near=`` some
+    end of the path for a clause that asked for a pace everywhere ("go slower by half").
+    """
     statements = [f for f in SKILLS if is_statement_skill(f)]
     step: Node = seq("t = ", Ref("call"))
     rules: dict[str, Node] = {
@@ -76,6 +91,12 @@ def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...]) -> Gra
         **value_rules(object_names),
     }
     rules["number"] = seq(Opt(Lit("-")), alt(*sorted(numbers, key=lambda n: (-len(n), n))))
+    if not object_names and not landmarks:
+        del rules["object"]
+        point = rules["point"]
+        assert isinstance(point, Alt)
+        rules["point"] = Alt(tuple(c for c in point.choices if Ref("object") not in getattr(c, "parts", ())))
     grammar = Grammar(rules)
     grammar.check()
     return grammar
+

@@ -19,9 +19,10 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.constraints import ConstraintMove
-from trajadapt.geometry import DIRECTION_SYNONYMS, DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
+from trajadapt.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
 from trajadapt.scene import SceneObject
 from trajadapt.trajectory import Trajectory
+from trajadapt.wording import moving_directions
 
 Array = npt.NDArray[np.float64]
 NEAR_SHARE = 0.25  # the share of waypoints nearest an object whose speed counts as "near" it
@@ -224,7 +225,7 @@ def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
 
 
 def _direction_flags(text: str, effect: Effect, noticeable: float, axes: Axes) -> list[str]:
-    words = {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", text) if w in DIRECTION_SYNONYMS}
+    words = moving_directions(text)  # "slow down" says no direction
     named = [w for w in DIRECTIONS if w in words]
     if len(named) != 1 or OPPOSITE_DIRECTIONS[named[0]] in words or CLOSER.search(text) or AWAY.search(text):
         return []  # several directions, or relative to an object: no single expected sign

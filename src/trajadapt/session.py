@@ -352,9 +352,10 @@ class AdaptationSession:
         check = self._clause_findings if self.settings.clause_check else None
         drafted = draft_by_clause(self.case, self._complete, how, check)
         for step in drafted.steps:
+            messages = step.request.messages if step.request else ()
             self._log("clause", "\n".join(step.lines), {
                 "user_text": step.clause,
-                "request": [{"role": m.role, "content": m.content} for m in step.request.messages],
+                "request": [{"role": m.role, "content": m.content} for m in messages],
                 "answer": step.completion.text if step.completion else None,
             }, step.error, {"llm": step.completion.duration_s if step.completion else None})  # fmt: skip
         if not any(step.lines for step in drafted.steps):
@@ -545,7 +546,9 @@ class AdaptationSession:
         except InvalidTrajectory as exc:
             return [f"the step gave no valid trajectory: {exc}"]
         axes = self.settings.axes.frame
-        return clause_findings(clause, measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes), axes)
+        return clause_findings(
+            clause, measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes), axes
+        )
 
     def _complete(self, request: ChatRequest | None = None) -> Completion:
         """Send ``request`` (by default the conversation so far) and count its time and tokens."""

@@ -31,10 +31,21 @@ PLACE_WORDS = re.compile(
 """Word stems that ask where the path goes (its place or shape), not how fast."""
 
 
+PACE_PHRASES = re.compile(
+    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b", re.I
+)
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up")."""
+
+
+def moving_directions(words: str) -> set[str]:
+    """The directions the words ask the path to move in: ``said_directions`` less "slow down"'s."""
+    return said_directions(PACE_PHRASES.sub(" slow ", words))
+
+
 def asked_kinds(words: str) -> frozenset[str]:
     """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
     kinds = {"pace"} if SPEED_WORDS.search(words) else set()
-    if PLACE_WORDS.search(words) or said_directions(words):
+    if PLACE_WORDS.search(words) or moving_directions(words):
         kinds.add("place")
     return frozenset(kinds)
 

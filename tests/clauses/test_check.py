@@ -1,11 +1,11 @@
 import numpy as np
 
+from tests.conftest import line_trajectory
 from trajadapt.clauses.check import clause_findings
 from trajadapt.effect import measure_effect
 from trajadapt.geometry import Axes
 from trajadapt.scene import SceneObject
 from trajadapt.trajectory import Trajectory
-from tests.conftest import line_trajectory
 
 LAMP = SceneObject("lamp", 0.2, 0.5, 0.5)
 
@@ -27,15 +27,22 @@ def slowed() -> Trajectory:
 
 
 def test_a_pace_clause_whose_step_moved_the_path_is_a_finding():
-    assert any("only for a change of speed" in f for f in clause_findings("take it slower by the lamp", effect_of(moved_left()), Axes()))
-    assert not any("only for a change of speed" in f for f in clause_findings("take it slower by the lamp", effect_of(slowed()), Axes()))
+    assert any(
+        "only for a change of speed" in f
+        for f in clause_findings("take it slower by the lamp", effect_of(moved_left()), Axes())
+    )
+    assert not any(
+        "only for a change of speed" in f
+        for f in clause_findings("take it slower by the lamp", effect_of(slowed()), Axes())
+    )
 
 
 def test_a_place_clause_whose_step_changed_only_the_speed_is_a_finding():
     found = clause_findings("keep a distance of at least 0.2 from the lamp", effect_of(slowed()), Axes())
     assert any("changed only the speed" in f for f in found)
     assert clause_findings("shift left and slow down", effect_of(slowed()), Axes()) == [] or all(
-        "changed only the speed" not in f for f in clause_findings("shift left and slow down", effect_of(slowed()), Axes())
+        "changed only the speed" not in f
+        for f in clause_findings("shift left and slow down", effect_of(slowed()), Axes())
     )
 
 
@@ -43,3 +50,11 @@ def test_the_effect_reports_own_flags_apply_to_one_clause():
     right = Trajectory(np.c_[moved_left().array[:, 0] * -1, moved_left().array[:, 1:]])
     assert any("says left" in f for f in clause_findings("head over to the left", effect_of(right), Axes()))
     assert clause_findings("head over to the left", effect_of(moved_left()), Axes()) == []
+
+
+def test_a_direction_said_and_nothing_moved_that_way_is_a_finding():
+    found = clause_findings("go to the bottom part", effect_of(moved_left()), Axes())
+    assert any("say down" in f for f in found)
+    assert not any(
+        "say left" in f for f in clause_findings("go to the left part", effect_of(moved_left()), Axes())
+    )

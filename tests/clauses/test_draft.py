@@ -1,6 +1,7 @@
 import json
 
 from tests.conftest import line_trajectory
+from trajadapt.backends.base import ChatRequest
 from trajadapt.backends.scripted import ScriptedBackend
 from trajadapt.case import Case
 from trajadapt.clauses.draft import ClauseRequests, ClauseStep, compose_plan, draft_by_clause, step_lines
@@ -72,7 +73,7 @@ def test_each_clause_gets_its_own_request_grammar_and_step():
 
 
 def test_a_clause_without_a_step_is_said_in_the_plan():
-    plan = compose_plan([ClauseStep("hum a tune", (), None, None, "no answer")])  # type: ignore[arg-type]
+    plan = compose_plan([ClauseStep("hum a tune", (), ChatRequest(messages=()), None, "no answer")])
     assert plan.steps == ("(no step for \u201chum a tune\u201d)",)
 
 
@@ -137,7 +138,12 @@ def test_a_step_a_reader_changed_is_explained_again():
 
 
 def test_a_line_repeating_an_earlier_clauses_step_is_left_out():
-    backend = GrammarFollowing(answers=["t = shift(t, 'left', 0.1)", "t = shift(t, 'left', 0.1)\nt = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    backend = GrammarFollowing(
+        answers=[
+            "t = shift(t, 'left', 0.1)",
+            "t = shift(t, 'left', 0.1)\nt = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        ]
+    )
     drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]))
     assert [s.lines for s in drafted.steps] == [
         ("t = shift(t, 'left', 0.1)",),
@@ -146,10 +152,20 @@ def test_a_line_repeating_an_earlier_clauses_step_is_left_out():
 
 
 def test_a_step_contradicting_its_words_is_asked_once_more_and_the_better_kept():
-    backend = GrammarFollowing(answers=["t = scale_speed(t, 1.4)", "t = shift(t, 'left', 0.1)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    backend = GrammarFollowing(
+        answers=[
+            "t = scale_speed(t, 1.4)",
+            "t = shift(t, 'left', 0.1)",
+            "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        ]
+    )
     findings = {"t = scale_speed(t, 1.4)": ["the step changed only the speed"]}
-    drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]),
-                              check=lambda clause, lines: findings.get(lines[0], []))
+    drafted = draft_by_clause(
+        two_clause_case(),
+        backend.complete,
+        ClauseRequests(AXIS_CONVENTIONS["paper"]),
+        check=lambda clause, lines: findings.get(lines[0], []),
+    )
     first = drafted.steps[0]
     assert first.lines == ("t = shift(t, 'left', 0.1)",) and first.asked_again and not first.findings
     retry = backend.requests[1].messages
@@ -158,16 +174,45 @@ def test_a_step_contradicting_its_words_is_asked_once_more_and_the_better_kept()
 
 
 def test_a_second_answer_no_better_leaves_the_first():
-    backend = GrammarFollowing(answers=["t = shift(t, 'right', 0.1)", "t = smooth(t)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
-    drafted = draft_by_clause(two_clause_case(), backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]),
-                              check=lambda clause, lines: ["wrong way"] if "left" in clause else [])
-    assert drafted.steps[0].lines == ("t = shift(t, 'right', 0.1)",) and drafted.steps[0].findings == ("wrong way",)
+    backend = GrammarFollowing(
+        answers=[
+            "t = shift(t, 'right', 0.1)",
+            "t = smooth(t)",
+            "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        ]
+    )
+    drafted = draft_by_clause(
+        two_clause_case(),
+        backend.complete,
+        ClauseRequests(AXIS_CONVENTIONS["paper"]),
+        check=lambda clause, lines: ["wrong way"] if "left" in clause else [],
+    )
+    assert drafted.steps[0].lines == ("t = shift(t, 'right', 0.1)",) and drafted.steps[0].findings == (
+        "wrong way",
+    )
 
 
 def test_the_session_checks_each_clause_in_the_sandbox(sandbox):
-    backend = GrammarFollowing(answers=["t = shift(t, 'right', 0.1)", "t = shift(t, 'left', 0.1)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"])
+    backend = GrammarFollowing(
+        answers=[
+            "t = shift(t, 'right', 0.1)",
+            "t = shift(t, 'left', 0.1)",
+            "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        ]
+    )
     session = AdaptationSession(two_clause_case(), backend, sandbox, SessionSettings())
     plan = session.draft()
     assert "shift(t, 'left', 0.1)" in plan.code and "'right'" not in plan.code
     assert "says left" in backend.requests[1].messages[-1].content
     assert any("asked once more" in note for note in session._left_out)
+
+
+def test_a_clause_that_only_keeps_something_gets_no_request():
+    scene = Scene((SceneObject("lamp", -0.3, 0.8, 0.5),))
+    case = Case("keep", line_trajectory(), scene, "go left by 0.1 keeping the start fixed")
+    backend = GrammarFollowing(answers=["t = shift(t, 'left', 0.1)"])
+    drafted = draft_by_clause(case, backend.complete, ClauseRequests(AXIS_CONVENTIONS["paper"]))
+    assert (
+        len(backend.requests) == 1
+        and drafted.plan.steps[-1] == "(keeps: \u201ckeeping the start fixed\u201d)"
+    )

@@ -1,4 +1,10 @@
-from trajadapt.clauses.grammar import allowed_numbers, clause_objects, names_landmarks, stated_numbers, step_grammar
+from trajadapt.clauses.grammar import (
+    allowed_numbers,
+    clause_objects,
+    names_landmarks,
+    stated_numbers,
+    step_grammar,
+)
 
 NAMES = ["kettle", "lamp", "red mug"]
 

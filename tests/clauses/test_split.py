@@ -1,6 +1,6 @@
 import pytest
 
-from trajadapt.clauses.split import split_clauses
+from trajadapt.clauses.split import only_keeps, split_clauses
 
 NAMES = ["box", "chair", "table", "lamp", "red mug"]
 
@@ -59,3 +59,51 @@ def test_decimal_points_do_not_break_and_nothing_is_lost():
     clauses = split_clauses(words, NAMES)
     assert clauses == ("Go right by 0.3", "go down by .2", "slow down near the red mug")
     assert split_clauses("  ", NAMES) == ("",)
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        (
+            "Go slightly upwards keeping a smaller distance from the chair",
+            ("Go slightly upwards", "keeping a smaller distance from the chair"),
+        ),
+        ("head right by 0.2 decelerating near the lamp", ("head right by 0.2", "decelerating near the lamp")),
+        (
+            "visit the table on the way, slowing down there",
+            ("visit the table on the way", "slowing down there"),
+        ),
+    ],
+)
+def test_a_participle_that_asks_something_more_is_a_clause(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "hurry while going past the box",
+        "go left during the second half",
+        "continue traversing for 0.2 after reaching goal",
+        "arc over the middle, bulging upwards",
+        "walk much faster when passing in the proximity of the lamp",
+    ],
+)
+def test_a_participle_that_qualifies_stays(words):
+    assert split_clauses(words, NAMES) == (words,)
+
+
+@pytest.mark.parametrize(
+    ("clause", "keeps"),
+    [
+        ("keeping the start fixed", True),
+        ("the goal stays where it is", True),
+        ("leave the end position unchanged", True),
+        ("keep a distance of at least 0.2 from the box", False),
+        ("keep left", False),
+        ("keep the speed the same", False),
+        ("slow down near the lamp", False),
+    ],
+)
+def test_a_clause_that_only_keeps_something(clause, keeps):
+    assert only_keeps(clause, NAMES) is keeps

@@ -13,9 +13,11 @@ near changed; "left" asked, the path went right), and two of kind:
 
 from __future__ import annotations
 
-from trajadapt.effect import NOTICEABLE, Effect, contradictions
+import numpy as np
+
+from trajadapt.effect import AWAY, CLOSER, NOTICEABLE, Effect, contradictions
 from trajadapt.geometry import Axes
-from trajadapt.wording import asked_kinds
+from trajadapt.wording import asked_kinds, moving_directions
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
@@ -34,4 +36,29 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
         findings.append(
             "the step changed only the speed, but these words ask where the path goes, not how fast"
         )
-    return findings
+    return findings + _not_moved_as_said(clause, effect, axes)
+
+
+def _not_moved_as_said(clause: str, effect: Effect, axes: Axes) -> list[str]:
+    """One direction said, no object to go closer to or away from, and nothing moved that way."""
+    said = moving_directions(clause)
+    if (
+        len(said) != 1
+        or CLOSER.search(clause)
+        or AWAY.search(clause)
+        or findings_of_sign(clause, effect, axes)
+    ):
+        return []
+    (direction,) = said
+    noticeable = NOTICEABLE * effect.size
+    along = float(np.asarray(effect.mean_shift) @ axes.vector(direction))
+    ends = [moved for moved, way in ((effect.start_moved, effect.start_direction),
+            (effect.goal_moved, effect.goal_direction)) if direction in way]  # fmt: skip
+    if along > noticeable / 2 or any(moved > noticeable for moved in ends):
+        return []
+    return [f"the words say {direction}, but the step moved the path {along:.3g} {direction} on average"]
+
+
+def findings_of_sign(clause: str, effect: Effect, axes: Axes) -> bool:
+    """Whether the effect report already flags a move the other way (``contradictions``)."""
+    return any("says" in flag for flag in contradictions(clause, effect, axes))

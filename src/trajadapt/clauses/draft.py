@@ -28,7 +28,7 @@ from trajadapt.clauses.grammar import (
     names_landmarks,
     step_grammar,
 )
-from trajadapt.clauses.split import split_clauses
+from trajadapt.clauses.split import only_keeps, split_clauses
 from trajadapt.errors import BackendError
 from trajadapt.geometry import AxisConvention
 from trajadapt.prompts import describe_environment, render, render_functions, summarize_trajectory
@@ -48,7 +48,8 @@ class ClauseStep:
 
     clause: str
     lines: tuple[str, ...]
-    request: ChatRequest
+    request: ChatRequest | None
+    """None for a clause that only asks to keep something (``split.only_keeps``): nothing was asked."""
     completion: Completion | None
     error: str | None = None
     findings: tuple[str, ...] = ()
@@ -119,7 +120,9 @@ def clause_request(case: Case, clauses: Sequence[str], index: int, how: ClauseRe
         examples=render_clause_examples(clause, how.examples, names),
         clause=clause,
     )
-    grammar = step_grammar(clause_objects(clauses, index, names), allowed_numbers(clause), names_landmarks(clause))
+    grammar = step_grammar(
+        clause_objects(clauses, index, names), allowed_numbers(clause), names_landmarks(clause)
+    )
     return ChatRequest(
         messages=(ChatMessage("system", clause_system_prompt(how.axes)), ChatMessage("user", task)),
         temperature=how.temperature,
@@ -163,9 +166,13 @@ def draft_by_clause(
     that contradicts its clause's words goes back once with the findings, and the answer with fewer
     findings is kept.
     """
-    clauses = split_clauses(case.instruction, [obj.name for obj in case.scene.objects])
+    names = [obj.name for obj in case.scene.objects]
+    clauses = split_clauses(case.instruction, names)
     steps: list[ClauseStep] = []
     for index, clause in enumerate(clauses):
+        if only_keeps(clause, names):
+            steps.append(ClauseStep(clause, (), None, None))
+            continue
         taken = {line for step in steps for line in step.lines}
         step = _step_for(clause, clause_request(case, clauses, index, how), complete, taken)
         if check is not None and step.lines:
@@ -190,7 +197,7 @@ def _checked(
 ) -> ClauseStep:
     """The step, or its second answer when the first contradicts the words and the second less."""
     findings = check(step.clause, step.lines)
-    if not findings or step.completion is None:
+    if not findings or step.completion is None or step.request is None:
         return step
     retry = render("clause_retry", findings="; ".join(findings), clause=step.clause)
     request = replace(step.request, messages=(
@@ -221,7 +228,13 @@ def describe_plan(code: str, steps: Sequence[ClauseStep]) -> Plan:
         _capital(sentence) + (f" \u2014 for \u201c{owner}\u201d" if len(owners) == len(sentences) else "")
         for sentence, owner in zip(sentences, owners or [""] * len(sentences), strict=False)
     ]
-    plan_steps += [f"(no step for \u201c{step.clause}\u201d)" for step in steps if not step.lines]
+    plan_steps += [
+        f"(keeps: \u201c{step.clause}\u201d)"
+        if step.request is None
+        else f"(no step for \u201c{step.clause}\u201d)"
+        for step in steps
+        if not step.lines
+    ]
     numbered = " ".join(f"{i}) {text}" for i, text in enumerate(plan_steps, start=1))
     raw = json.dumps({"high_level_plan": numbered, "python_code": code})
     return Plan(steps=tuple(plan_steps), code=code, raw_text=raw)

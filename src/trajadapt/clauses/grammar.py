@@ -26,7 +26,9 @@ MAX_STEPS_PER_CLAUSE = 2
 PLAIN_NUMBERS = ("0", "0.5", "1", "2")
 NUMBER = re.compile(r"(?<![\w.])-?(?:\d+(?:\.\d+)?|\.\d+)(?![\w.]*[a-z])", re.I)
 LANDMARK_WORDS = re.compile(
-    r"\b(?:" + "|".join(sorted({n.split()[0] for n in START_NAMES + GOAL_NAMES}, key=len, reverse=True)) + r")\w*",
+    r"\b(?:"
+    + "|".join(sorted({n.split()[0] for n in START_NAMES + GOAL_NAMES}, key=len, reverse=True))
+    + r")\w*",
     re.I,
 )
 """Words that name the path's own start or goal ('starting', 'end', 'destination')."""
@@ -99,4 +101,3 @@ def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...], landma
     grammar = Grammar(rules)
     grammar.check()
     return grammar
-

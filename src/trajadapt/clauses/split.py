@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from trajadapt.wording import asked_kinds, names_in, said_directions, whole_words
+from trajadapt.wording import asked_kinds, moving_directions, names_in, whole_words
 
 BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
@@ -138,7 +138,7 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return True  # a sentence mark, "then"
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
-        return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
+        return bool(_content_words(piece, names)[1:]) or bool(moving_directions(piece))
     if participle and joiner.strip() == ",":
         return bool(asked_kinds(piece) - asked_kinds(previous))
     return _asks_something(piece, names)
@@ -181,16 +181,18 @@ SETTING_WORDS = frozenset(
 
 
 KEEPING = re.compile(
-    r"\b(?:keep\w*|maintain\w*|retain\w*|preserv\w*|same|fixed|unchanged|unaltered|untouched|as (?:it|they) (?:is|are)"
-    r"|where (?:it|they) (?:is|are)|in place|do(?:n't| not) (?:move|change))\b",
+    r"\b(?:keep\w*|maintain\w*|retain\w*|preserv\w*|same|fixed|unchanged|unaltered|untouched"
+    r"|as (?:it|they) (?:is|are)|where (?:it|they) (?:is|are)|in place|do(?:n't| not) (?:move|change))\b",
     re.I,
 )
 
 
 def only_keeps(clause: str, names: Sequence[str] = ()) -> bool:
-    """Whether the clause only asks that something stay as it is ("keeping the start fixed", "the goal
-    stays where it is"): it needs no step of its own. A clause that names an object, a direction, a
-    pace or a place ("keep 0.2 from the box", "keep left") asks more than that."""
+    """Whether the clause only asks that something stay as it is: it needs no step of its own.
+
+    "keeping the start fixed", "the goal stays where it is". A clause that names an object, a
+    direction, a pace or a place ("keep 0.2 from the box", "keep left") asks more than that.
+    """
     return (
         bool(KEEPING.search(clause))
         and not asked_kinds(clause)

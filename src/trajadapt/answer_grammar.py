@@ -123,14 +123,27 @@ def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
     }
 
 
-def call_rule(function: Callable[..., Any]) -> Node:
-    """``name(t, required..., optional...)``: optional ones positional in order, then by keyword."""
+def call_rule(function: Callable[..., Any], unavailable: frozenset[str] = frozenset()) -> Node | None:
+    """``name(t, required..., optional...)``: optional ones positional in order, then by keyword.
+
+    ``unavailable`` kinds cannot be written (a clause that names no object has no point): a skill
+    that needs one has no rule (None), and optional arguments of it are left out, the others then
+    given by keyword only.
+    """
     parameters = skill_parameters(function)[1:]
     required = [(p, kind) for p, kind in parameters if p.default is inspect.Parameter.empty]
     optional = [(p, kind) for p, kind in parameters if p.default is not inspect.Parameter.empty]
+    if any(kind in unavailable for _, kind in required):
+        return None
     parts: list[Node | str] = [f"{function.__name__}(t"]
     parts += [seq(", ", Ref(kind)) for _, kind in required]
-    tail = _optional_tail(optional)
+    if any(kind in unavailable for _, kind in optional):
+        keywords = [(p, kind) for p, kind in optional if kind not in unavailable]
+        tail: Node | None = (
+            seq(*(Opt(seq(f", {p.name}=", Ref(k))) for p, k in keywords)) if keywords else None
+        )
+    else:
+        tail = _optional_tail(optional)
     if tail is not None:
         parts.append(tail)
     parts.append(")")
@@ -161,7 +174,7 @@ def answer_grammar(object_names: tuple[str, ...]) -> Grammar:
             f"{RESULT_VARIABLE} = t",
         ),
         "call": alt(*(Ref(f"call-{f.__name__.replace('_', '-')}") for f in statements)),
-        **{f"call-{f.__name__.replace('_', '-')}": call_rule(f) for f in statements},
+        **{f"call-{f.__name__.replace('_', '-')}": rule for f in statements if (rule := call_rule(f))},
         **value_rules(object_names),
     }
     grammar = Grammar(rules)

@@ -51,3 +51,11 @@ def test_a_clause_naming_no_object_and_no_end_can_point_at_nothing_by_name():
         "t = scale_speed(t, 0.5, near=detect_objects('goal'))"
     )
     assert names_landmarks("once you reach the destination") and not names_landmarks("go slower by half")
+
+
+def test_with_nothing_to_point_at_no_skill_needs_a_point_and_nothing_is_near():
+    grammar = step_grammar((), allowed_numbers("go faster in the middle"), landmarks=False)
+    assert grammar.matches("t = scale_speed(t, 1.4, part='middle')")
+    assert not grammar.matches("t = scale_speed(t, 1.4, near=t[0])")
+    assert not grammar.matches("t = move_closer(t, [0, 0, 0])")
+    assert grammar.matches("t = wait(t, 'middle', 5)")

@@ -77,27 +77,45 @@ def names_landmarks(clause: str) -> bool:
     return bool(LANDMARK_WORDS.search(clause))
 
 
-@lru_cache(maxsize=256)
-def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool = True) -> Grammar:
-    """One or two lines ``t = <skill>(t, ...)`` with these objects and numbers (cached).
+POINT_KINDS = frozenset({"point", "points"})
 
-    With no object and no ``landmarks``, a step cannot point at anything by name: no ``near=`` some
-    end of the path for a clause that asked for a pace everywhere ("go slower by half").
+
+def _step_rules(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool) -> dict[str, Node]:
+    """The rules of one clause's skill call (``call``) with its objects and numbers.
+
+    With no object and no ``landmarks`` there is no point to write: skills that need one are not
+    offered, and no optional ``near=`` either.
     """
-    statements = [f for f in SKILLS if is_statement_skill(f)]
-    step: Node = seq("t = ", Ref("call"))
+    unavailable = POINT_KINDS if not object_names and not landmarks else frozenset()
+    calls = {
+        f"call-{f.__name__.replace('_', '-')}": rule
+        for f in SKILLS
+        if is_statement_skill(f) and (rule := call_rule(f, unavailable)) is not None
+    }
     rules: dict[str, Node] = {
-        "root": seq(step, Opt(seq("\n", step))) if MAX_STEPS_PER_CLAUSE == 2 else step,
-        "call": alt(*(Ref(f"call-{f.__name__.replace('_', '-')}") for f in statements)),
-        **{f"call-{f.__name__.replace('_', '-')}": call_rule(f) for f in statements},
+        "call": alt(*(Ref(name) for name in calls)),
+        **calls,
         **value_rules(object_names),
     }
     rules["number"] = seq(Opt(Lit("-")), alt(*sorted(numbers, key=lambda n: (-len(n), n))))
-    if not object_names and not landmarks:
-        del rules["object"]
-        point = rules["point"]
-        assert isinstance(point, Alt)
-        rules["point"] = Alt(tuple(c for c in point.choices if Ref("object") not in getattr(c, "parts", ())))
-    grammar = Grammar(rules)
+    if unavailable:
+        for kind in (*unavailable, "object"):
+            del rules[kind]
+        waypoint = rules["waypoint"]
+        assert isinstance(waypoint, Alt)
+        rules["waypoint"] = Alt(tuple(c for c in waypoint.choices if not _points_at_something(c)))
+    return rules
+
+
+def _points_at_something(node: Node) -> bool:
+    return node == Ref("point") or Ref("point") in getattr(node, "parts", ())
+
+
+@lru_cache(maxsize=256)
+def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool = True) -> Grammar:
+    """One or two lines ``t = <skill>(t, ...)`` with these objects and numbers (cached)."""
+    step: Node = seq("t = ", Ref("call"))
+    root = seq(step, Opt(seq("\n", step))) if MAX_STEPS_PER_CLAUSE == 2 else step
+    grammar = Grammar({"root": root, **_step_rules(object_names, numbers, landmarks)})
     grammar.check()
     return grammar

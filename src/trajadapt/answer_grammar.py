@@ -73,7 +73,8 @@ def is_statement_skill(function: Callable[..., Any]) -> bool:
     return bool(parameters) and parameters[0][1] == "trajectory" and returns not in (int, float)
 
 
-def _quoted_words(words: Sequence[str]) -> Node:
+def quoted_words(words: Sequence[str]) -> Node:
+    """One of the words, in single quotes (longest first, so that a longer word is tried first)."""
     return seq("'", alt(*sorted({w for w in words if w}, key=lambda w: (-len(w), w))), "'")
 
 
@@ -107,17 +108,17 @@ def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
             seq("t[", Opt(Lit("-")), Ref("int"), "]"),
         ),
         "points": alt(Ref("point"), seq("[", Ref("point"), Many(seq(", ", Ref("point"))), "]")),
-        "direction": _quoted_words(DIRECTIONS),
-        "distance": alt(Ref("number"), _quoted_words(list(AMOUNT_WORDS))),
-        "fraction": alt(Ref("number"), _quoted_words(list(CLOSER_FRACTIONS))),
-        "part": alt(_quoted_words(list(PART_WORDS)), seq("(", Ref("number"), ", ", Ref("number"), ")")),
+        "direction": quoted_words(DIRECTIONS),
+        "distance": alt(Ref("number"), quoted_words(list(AMOUNT_WORDS))),
+        "fraction": alt(Ref("number"), quoted_words(list(CLOSER_FRACTIONS))),
+        "part": alt(quoted_words(list(PART_WORDS)), seq("(", Ref("number"), ", ", Ref("number"), ")")),
         "waypoint": alt(
             Ref("int"),
-            _quoted_words(POSITION_WORDS),
+            quoted_words(POSITION_WORDS),
             Ref("point"),
             seq("closest_waypoint(t, ", Ref("point"), ")"),
         ),
-        "profile": _quoted_words(PROFILES),
+        "profile": quoted_words(PROFILES),
         "height": Ref("number"),
         "factor": Ref("number"),
     }

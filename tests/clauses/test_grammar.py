@@ -1,7 +1,7 @@
 from trajadapt.clauses.grammar import (
     allowed_numbers,
     clause_objects,
-    names_landmarks,
+    said_places,
     stated_numbers,
     step_grammar,
 )
@@ -44,17 +44,38 @@ def test_the_grammar_admits_the_clauses_step_and_refuses_the_others():
 
 
 def test_a_clause_naming_no_object_and_no_end_can_point_at_nothing_by_name():
-    grammar = step_grammar((), allowed_numbers("go slower by half"), landmarks=False)
+    grammar = step_grammar((), allowed_numbers("go slower by half"), said_places("go slower by half"))
     assert grammar.matches("t = scale_speed(t, 0.5)")
     assert not grammar.matches("t = scale_speed(t, 0.5, near=detect_objects('start'))")
-    assert step_grammar((), allowed_numbers("slow down towards the end"), landmarks=True).matches(
+    towards_the_end = "slow down towards the end"
+    assert step_grammar((), allowed_numbers(towards_the_end), said_places(towards_the_end)).matches(
         "t = scale_speed(t, 0.5, near=detect_objects('goal'))"
     )
-    assert names_landmarks("once you reach the destination") and not names_landmarks("go slower by half")
+    assert "goal" in said_places("once you reach the destination") and not said_places("go slower by half")
+
+
+def test_places_are_those_the_words_give():
+    fan = step_grammar(
+        ("fan",), allowed_numbers("stop near the fan for 10 timesteps"), said_places("stop near the fan")
+    )
+    assert fan.matches("t = wait(t, detect_objects('fan'), 10)")
+    assert not fan.matches("t = wait(t, 'goal', 10)") and not fan.matches(
+        "t = wait(t, detect_objects('goal'), 10)"
+    )
+    halfway = step_grammar((), allowed_numbers("pause halfway"), said_places("pause halfway for 5 steps"))
+    assert halfway.matches("t = wait(t, 'middle', 5)") and not halfway.matches("t = wait(t, 'end', 5)")
+    half = step_grammar(
+        (), allowed_numbers("faster in the second half"), said_places("faster in the second half")
+    )
+    assert half.matches("t = scale_speed(t, 1.4, part='second half')") and not half.matches(
+        "t = scale_speed(t, 1.4, part='end')"
+    )
 
 
 def test_with_nothing_to_point_at_no_skill_needs_a_point_and_nothing_is_near():
-    grammar = step_grammar((), allowed_numbers("go faster in the middle"), landmarks=False)
+    grammar = step_grammar(
+        (), allowed_numbers("go faster in the middle"), said_places("go faster in the middle")
+    )
     assert grammar.matches("t = scale_speed(t, 1.4, part='middle')")
     assert not grammar.matches("t = scale_speed(t, 1.4, near=t[0])")
     assert not grammar.matches("t = move_closer(t, [0, 0, 0])")

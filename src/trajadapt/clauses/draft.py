@@ -25,7 +25,7 @@ from trajadapt.clauses.grammar import (
     MAX_STEPS_PER_CLAUSE,
     allowed_numbers,
     clause_objects,
-    names_landmarks,
+    said_places,
     step_grammar,
 )
 from trajadapt.clauses.split import only_keeps, split_clauses
@@ -121,7 +121,7 @@ def clause_request(case: Case, clauses: Sequence[str], index: int, how: ClauseRe
         clause=clause,
     )
     grammar = step_grammar(
-        clause_objects(clauses, index, names), allowed_numbers(clause), names_landmarks(clause)
+        clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause)
     )
     return ChatRequest(
         messages=(ChatMessage("system", clause_system_prompt(how.axes)), ChatMessage("user", task)),

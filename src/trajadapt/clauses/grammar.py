@@ -1,10 +1,16 @@
-"""The grammar of the step (or two) written for one clause: its objects and numbers, no others.
+"""The grammar of the step (or two) written for one clause: what its words give, nothing else.
 
-The whole-answer grammar (``answer_grammar``) admits any object of the scene and any number in
-every step, so a small model can give one clause's step another clause's object ("faster near the
-kettle and slower near the lamp" -> one speed step on the lamp) or copy an example's number. Here a
-step's points may name only the objects its own clause refers to (``clause_objects``), and its
-numbers are the clause's own, the phrase table's speed factors and a few plain ones (0, 0.5, 1, 2).
+The whole-answer grammar (``answer_grammar``) admits any object of the scene, any number and any
+place on the path in every step, so a small model can give one clause's step another clause's
+object ("faster near the kettle and slower near the lamp" -> one speed step on the lamp), copy an
+example's number, or put a pace asked for the whole path "near" the start. Here a step may name:
+
+- objects: those its clause refers to (``clause_objects``);
+- numbers: the clause's own, the phrase table's speed factors and 0, 0.5, 1, 2;
+- places: the parts and positions of the path the clause speaks of (``said_places``: "halfway" gives
+  'middle', "once you reach the destination" gives 'goal' and the landmark ``detect_objects('goal')``).
+
+With nothing to point at, no skill that needs a point is offered, and no ``near=``.
 """
 
 from __future__ import annotations
@@ -13,10 +19,18 @@ import re
 from collections.abc import Sequence
 from functools import lru_cache
 
-from trajadapt.answer_grammar import call_rule, is_statement_skill, value_rules
+from trajadapt.answer_grammar import (
+    LANDMARKS,
+    call_rule,
+    is_statement_skill,
+    quoted_words,
+    usable_names,
+    value_rules,
+)
 from trajadapt.gbnf import Alt, Grammar, Lit, Node, Opt, Ref, alt, seq
-from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
+from trajadapt.geometry import PART_WORDS
 from trajadapt.skills import SKILLS
+from trajadapt.skills.events import POSITION_WORDS
 from trajadapt.skills.speed import SPEED_FACTORS
 from trajadapt.wording import names_in, whole_words
 
@@ -25,14 +39,20 @@ MAX_STEPS_PER_CLAUSE = 2
 
 PLAIN_NUMBERS = ("0", "0.5", "1", "2")
 NUMBER = re.compile(r"(?<![\w.])-?(?:\d+(?:\.\d+)?|\.\d+)(?![\w.]*[a-z])", re.I)
-LANDMARK_WORDS = re.compile(
-    r"\b(?:"
-    + "|".join(sorted({n.split()[0] for n in START_NAMES + GOAL_NAMES}, key=len, reverse=True))
-    + r")\w*",
-    re.I,
-)
-"""Words that name the path's own start or goal ('starting', 'end', 'destination')."""
 POINTING_BACK = re.compile(r"\b(?:it|its|there|them|that|this|these|those|the same)\b", re.I)
+POINT_KINDS = frozenset({"point", "points"})
+
+PLACE_GROUPS: tuple[tuple[frozenset[str], frozenset[str]], ...] = (
+    (frozenset({"start", "beginning", "begin", "starting", "initial", "initially", "origin"}),
+     frozenset({"start", "beginning"})),
+    (frozenset({"middle", "center", "centre", "halfway", "midway", "mid", "intermediate", "midpoint"}),
+     frozenset({"middle", "center"})),
+    (frozenset({"end", "goal", "final", "finish", "destination", "last", "ending", "target"}),
+     frozenset({"end", "goal", "final"})),
+    (frozenset({"whole", "all", "entire", "everywhere", "throughout"}), frozenset({"all", "whole"})),
+)  # fmt: skip
+"""Words a user says for a place on the path, and the part or position words that name it in code."""
+HALVES = re.compile(r"\b(first|second) half\b", re.I)
 
 
 def stated_numbers(words: str) -> tuple[str, ...]:
@@ -50,12 +70,20 @@ def allowed_numbers(clause: str) -> tuple[str, ...]:
     return tuple(dict.fromkeys([*stated_numbers(clause), *factors, *PLAIN_NUMBERS]))
 
 
+def said_places(clause: str) -> frozenset[str]:
+    """The part and position words (``geometry.PART_WORDS``, ``events.POSITION_WORDS``) the clause gives."""
+    words = set(whole_words(clause).split())
+    places = {name for said, names in PLACE_GROUPS if words & said for name in names}
+    places |= {f"{which.lower()} half" for which in HALVES.findall(clause)}
+    return frozenset(places)
+
+
 def clause_objects(clauses: Sequence[str], index: int, names: Sequence[str]) -> tuple[str, ...]:
     """The scene objects the clause at ``index`` may name in its step.
 
     Those it names (whole words, or the last word of a longer name: "the mug" for "red mug"), and if
-    it points back ("wait there"), those of the clause before. A clause that names none may use none
-    (only the path's own start and goal): "go slower by half" is no speed change near some object.
+    it points back ("wait there"), those of the clause before. A clause that names none may use none:
+    "go slower by half" is no speed change near some object.
     """
     clause = clauses[index]
     named = _referred(clause, names)
@@ -72,21 +100,25 @@ def _referred(clause: str, names: Sequence[str]) -> list[str]:
     return [name for name in names if len(head := name.split()[-1]) > 2 and whole_words(head) in words]
 
 
-def names_landmarks(clause: str) -> bool:
-    """Whether the clause speaks of the path's start or goal, so that a step may point at them."""
-    return bool(LANDMARK_WORDS.search(clause))
+@lru_cache(maxsize=256)
+def step_grammar(
+    object_names: tuple[str, ...], numbers: tuple[str, ...], places: frozenset[str] = frozenset()
+) -> Grammar:
+    """One or two lines ``t = <skill>(t, ...)`` with these objects, numbers and places (cached)."""
+    step: Node = seq("t = ", Ref("call"))
+    root = seq(step, Opt(seq("\n", step))) if MAX_STEPS_PER_CLAUSE == 2 else step
+    grammar = Grammar({"root": root, **_step_rules(object_names, numbers, places)})
+    grammar.check()
+    return grammar
 
 
-POINT_KINDS = frozenset({"point", "points"})
-
-
-def _step_rules(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool) -> dict[str, Node]:
-    """The rules of one clause's skill call (``call``) with its objects and numbers.
-
-    With no object and no ``landmarks`` there is no point to write: skills that need one are not
-    offered, and no optional ``near=`` either.
-    """
-    unavailable = POINT_KINDS if not object_names and not landmarks else frozenset()
+def _step_rules(
+    object_names: tuple[str, ...], numbers: tuple[str, ...], places: frozenset[str]
+) -> dict[str, Node]:
+    """The rules of one clause's skill call (``call``)."""
+    landmarks = [name for name in LANDMARKS if name in places]
+    objects = [name for name in usable_names(object_names) if name not in LANDMARKS] + landmarks
+    unavailable = frozenset() if objects else POINT_KINDS
     calls = {
         f"call-{f.__name__.replace('_', '-')}": rule
         for f in SKILLS
@@ -98,24 +130,30 @@ def _step_rules(object_names: tuple[str, ...], numbers: tuple[str, ...], landmar
         **value_rules(object_names),
     }
     rules["number"] = seq(Opt(Lit("-")), alt(*sorted(numbers, key=lambda n: (-len(n), n))))
-    if unavailable:
-        for kind in (*unavailable, "object"):
+    said_parts = [word for word in PART_WORDS if word in places]
+    span = seq("(", Ref("number"), ", ", Ref("number"), ")")
+    rules["part"] = alt(quoted_words(said_parts), span) if said_parts else span
+    positions = [word for word in POSITION_WORDS if word in places]
+    rules["waypoint"] = alt(
+        *(
+            choice
+            for choice in _choices(rules["waypoint"])
+            if not (unavailable and _points(choice)) and choice != quoted_words(POSITION_WORDS)
+        ),
+        *((quoted_words(positions),) if positions else ()),
+    )
+    if objects:
+        rules["object"] = alt(*sorted(objects, key=lambda n: (-len(n), n)))
+    else:
+        for kind in (*POINT_KINDS, "object"):
             del rules[kind]
-        waypoint = rules["waypoint"]
-        assert isinstance(waypoint, Alt)
-        rules["waypoint"] = Alt(tuple(c for c in waypoint.choices if not _points_at_something(c)))
     return rules
 
 
-def _points_at_something(node: Node) -> bool:
+def _choices(node: Node) -> tuple[Node, ...]:
+    return node.choices if isinstance(node, Alt) else (node,)
+
+
+def _points(node: Node) -> bool:
+    """Whether a choice writes a point (``point`` itself, or a call with one)."""
     return node == Ref("point") or Ref("point") in getattr(node, "parts", ())
-
-
-@lru_cache(maxsize=256)
-def step_grammar(object_names: tuple[str, ...], numbers: tuple[str, ...], landmarks: bool = True) -> Grammar:
-    """One or two lines ``t = <skill>(t, ...)`` with these objects and numbers (cached)."""
-    step: Node = seq("t = ", Ref("call"))
-    root = seq(step, Opt(seq("\n", step))) if MAX_STEPS_PER_CLAUSE == 2 else step
-    grammar = Grammar({"root": root, **_step_rules(object_names, numbers, landmarks)})
-    grammar.check()
-    return grammar

@@ -98,14 +98,18 @@ def speed_profile(
 
     Replace the velocity by a profile: 'constant', 'trapezoidal' (speed up, cruise, slow down),
     'accelerate' (uniformly up to peak) or 'decelerate' (uniformly down to 0 at the goal), applied from
-    fraction start of the path on; peak defaults to the current top speed.
+    fraction start of the path on; peak defaults to the current top speed. Decelerating never makes a
+    waypoint faster than it was, accelerating never slower; accelerating a path already at its top
+    speed goes up to the phrase table's "faster" factor of it.
     """
     t = as_trajectory(trajectory)
-    top = float(peak) if peak is not None else float(t[:, 3].max())
     s = progress(t)
     begin = float(np.clip(start, 0.0, 0.99))
     local = np.clip((s - begin) / (1.0 - begin), 0.0, 1.0)
     entry = float(np.interp(begin, s, t[:, 3]))
+    top = float(peak) if peak is not None else float(t[:, 3].max())
+    if peak is None and top <= entry * (1.0 + 1e-6):
+        top = entry * SPEED_FACTORS["faster"][""]
     profiles: dict[str, Array] = {
         "constant": np.full(len(t), top),
         "trapezoidal": top * np.minimum(1.0, np.minimum(local, 1.0 - local) / 0.2),
@@ -116,5 +120,10 @@ def speed_profile(
     if key not in PROFILES:
         raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(PROFILES)}")
     after = s >= begin
-    t[after, 3] = np.maximum(profiles[key][after], 0.0)
+    speeds = np.maximum(profiles[key][after], 0.0)
+    if key == "decelerate":
+        speeds = np.minimum(speeds, t[after, 3])
+    elif key == "accelerate":
+        speeds = np.maximum(speeds, t[after, 3])
+    t[after, 3] = speeds
     return t

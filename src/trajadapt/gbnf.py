@@ -117,6 +117,28 @@ class Grammar:
                     raise ValueError(f"rule {name!r} refers to undefined rule {ref!r}")
 
 
+def renamed(rules: Mapping[str, Node], suffix: str) -> dict[str, Node]:
+    """The rules with ``suffix`` added to every rule name and every reference.
+
+    A renamed copy can sit beside the original in one grammar (one set of value rules per clause).
+    """
+    return {f"{name}{suffix}": _renamed(node, suffix) for name, node in rules.items()}
+
+
+def _renamed(node: Node, suffix: str) -> Node:
+    if isinstance(node, Ref):
+        return Ref(node.name + suffix)
+    if isinstance(node, Seq):
+        return Seq(tuple(_renamed(part, suffix) for part in node.parts))
+    if isinstance(node, Alt):
+        return Alt(tuple(_renamed(choice, suffix) for choice in node.choices))
+    if isinstance(node, Opt | Many | Some):
+        return type(node)(_renamed(node.inner, suffix))
+    if isinstance(node, Upto):
+        return Upto(_renamed(node.inner, suffix), node.most)
+    return node
+
+
 def _refs(node: Node) -> Iterator[str]:
     if isinstance(node, Ref):
         yield node.name

@@ -21,14 +21,17 @@ from functools import lru_cache
 
 from trajadapt.answer_grammar import (
     LANDMARKS,
+    NEWLINE,
     call_rule,
     is_statement_skill,
     quoted_words,
     usable_names,
     value_rules,
 )
-from trajadapt.gbnf import Alt, Grammar, Lit, Node, Opt, Ref, alt, seq
+from trajadapt.clauses.split import only_keeps
+from trajadapt.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Some, alt, renamed, seq
 from trajadapt.geometry import PART_WORDS
+from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.skills import SKILLS
 from trajadapt.skills.events import POSITION_WORDS
 from trajadapt.skills.speed import SPEED_FACTORS
@@ -108,6 +111,39 @@ def step_grammar(
     step: Node = seq("t = ", Ref("call"))
     root = seq(step, Opt(seq("\n", step))) if MAX_STEPS_PER_CLAUSE == 2 else step
     grammar = Grammar({"root": root, **_step_rules(object_names, numbers, places)})
+    grammar.check()
+    return grammar
+
+
+MAX_CLAUSES = 6
+"""An instruction of more clauses than this is answered under the scene's plain answer grammar."""
+
+
+@lru_cache(maxsize=64)
+def clause_answer_grammar(clauses: tuple[str, ...], names: tuple[str, ...]) -> Grammar:
+    """A whole answer (the plan, then the code) with one or two lines for each clause, in order.
+
+    Line by line the code keeps to its own clause's objects, numbers and places: every clause gets
+    a step, no step goes without a clause, and no clause's object or number reaches another's step.
+    A clause that only keeps something (``split.only_keeps``) gets no line.
+    """
+    asking = [index for index, clause in enumerate(clauses) if not only_keeps(clause, names)]
+    rules: dict[str, Node] = {
+        "root": seq('{"high_level_plan": "', Ref("plan"), '", "python_code": "', Ref("code"), '"}'),
+        "plan": Some(PLAIN_TEXT_CHAR),
+        "code": seq(
+            "t = get_trajectory()" + NEWLINE,
+            *(Ref(f"steps-c{index}") for index in asking),
+            f"{RESULT_VARIABLE} = t",
+        ),
+    }
+    for index in asking:
+        clause, suffix = clauses[index], f"-c{index}"
+        own = _step_rules(clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause))
+        rules |= renamed(own, suffix)
+        line = seq("t = ", Ref(f"call{suffix}"), NEWLINE)
+        rules[f"steps{suffix}"] = seq(line, Opt(line))
+    grammar = Grammar(rules)
     grammar.check()
     return grammar
 

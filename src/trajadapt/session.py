@@ -362,8 +362,9 @@ class AdaptationSession:
             return self._ask("draft", self.case.instruction)  # no clause got a step: the whole answer
         plan = drafted.replanned(self._without_unasked_steps(drafted.plan).code)
         self._left_out += [
-            f"\u201c{step.clause}\u201d: asked once more, as its first step contradicted the words"
-            + (f"; still: {'; '.join(step.findings)}" if step.findings else "")
+            f"\u201c{step.clause}\u201d: the model's step, run alone, contradicted the words; "
+            "asked once more, "
+            + ("kept the second answer" if step.kept_second else "kept the first (the second was no better)")
             for step in drafted.steps
             if step.asked_again
         ]

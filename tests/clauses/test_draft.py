@@ -167,7 +167,12 @@ def test_a_step_contradicting_its_words_is_asked_once_more_and_the_better_kept()
         check=lambda clause, lines: findings.get(lines[0], []),
     )
     first = drafted.steps[0]
-    assert first.lines == ("t = shift(t, 'left', 0.1)",) and first.asked_again and not first.findings
+    assert (
+        first.lines == ("t = shift(t, 'left', 0.1)",)
+        and first.asked_again
+        and first.kept_second
+        and not first.findings
+    )
     retry = backend.requests[1].messages
     assert retry[-2].content == "t = scale_speed(t, 1.4)" and "changed only the speed" in retry[-1].content
     assert len(drafted.completion.text.split("Words:")) == 3 and len(first.completions) == 2

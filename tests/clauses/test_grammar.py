@@ -88,13 +88,21 @@ def test_the_whole_answer_grammar_from_the_clause_list():
     from trajadapt.clauses.grammar import clause_answer_grammar
 
     names = ("box", "lamp")
-    grammar = clause_answer_grammar(("go left by 0.2", "slow down near the lamp", "keep the start fixed"), names)
+    grammar = clause_answer_grammar(
+        ("go left by 0.2", "slow down near the lamp", "keep the start fixed"), names
+    )
 
     def answer(*lines):
         code = "\n".join(["t = get_trajectory()", *lines, "modified_trajectory = t"])
         return json.dumps({"high_level_plan": "1) a 2) b", "python_code": code})
 
-    assert grammar.matches(answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))"))
-    assert not grammar.matches(answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('box'))"))
+    assert grammar.matches(
+        answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))")
+    )
+    assert not grammar.matches(
+        answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('box'))")
+    )
     assert not grammar.matches(answer("t = shift(t, 'left', 0.2)"))  # a clause dropped
-    assert not grammar.matches(answer("t = scale_speed(t, 0.65, near=detect_objects('lamp'))", "t = shift(t, 'left', 0.2)"))
+    assert not grammar.matches(
+        answer("t = scale_speed(t, 0.65, near=detect_objects('lamp'))", "t = shift(t, 'left', 0.2)")
+    )

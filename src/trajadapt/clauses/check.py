@@ -7,8 +7,8 @@ own flags (slower asked, the speed rose; an object named that neither the distan
 near changed; "left" asked, the path went right), and two of kind:
 
 - a clause that asks only for a pace ("take it slower by the lamp") whose step moved the path;
-- a clause that asks only where the path goes ("keep 0.2 from the marmoset") whose step changed
-  only the speed.
+- a clause that asks only where the path goes, towards a direction or an object ("keep 0.2 from
+  the marmoset"), whose step changed only the speed.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 
 from trajadapt.effect import AWAY, CLOSER, NOTICEABLE, Effect, contradictions
 from trajadapt.geometry import Axes
-from trajadapt.wording import asked_kinds, moving_directions
+from trajadapt.wording import asked_kinds, moving_directions, names_in
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
@@ -32,7 +32,8 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
             f"the step moved the path (by up to {effect.largest_displacement:.3g}), but these words ask "
             "only for a change of speed"
         )
-    if place and not pace and speed_changed and not moved:
+    concrete = bool(moving_directions(clause) or names_in(clause, [obj.name for obj in effect.objects]))
+    if place and concrete and not pace and speed_changed and not moved:
         findings.append(
             "the step changed only the speed, but these words ask where the path goes, not how fast"
         )

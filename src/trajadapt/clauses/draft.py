@@ -55,6 +55,7 @@ class ClauseStep:
     findings: tuple[str, ...] = ()
     """What the kept lines, run alone, still contradict in the clause's words (``ClauseCheck``)."""
     asked_again: bool = False
+    kept_second: bool = False
     earlier: tuple[Completion, ...] = ()
     """Answers given before the kept one (a step asked again)."""
 
@@ -206,7 +207,13 @@ def _checked(
     second = _step_for(step.clause, request, complete, taken)
     second_findings = check(second.clause, second.lines) if second.lines else [*findings, "no step"]
     if len(second_findings) < len(findings):
-        return replace(second, findings=tuple(second_findings), asked_again=True, earlier=(step.completion,))
+        return replace(
+            second,
+            findings=tuple(second_findings),
+            asked_again=True,
+            kept_second=True,
+            earlier=(step.completion,),
+        )
     return replace(step, findings=tuple(findings), asked_again=True, earlier=second.completions)
 
 

@@ -88,6 +88,8 @@ ENVIRONMENT = {
     "EXAMPLES": "5",
     "LEAVE_OUT_UNASKED": "no",
     "REPAIR_CONTRADICTIONS": "yes",
+    "CLAUSE_STEPS": "no",
+    "CLAUSE_CHECK": "off",
     "ROBOT": "drone",
 }
 SEEN = {
@@ -102,6 +104,8 @@ SEEN = {
     "examples": 5,
     "leave_out_unasked": False,
     "repair_contradictions": True,
+    "clause_steps": False,
+    "clause_check": False,
     "robot": "drone",
 }
 

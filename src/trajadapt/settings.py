@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 import tomllib
 from collections.abc import Mapping
@@ -123,7 +124,64 @@ def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:
     given = {key: value for key, value in (overrides or {}).items() if value is not None}
     settings = replace(settings, **given)
     _check_choices(settings)
+    _check_ranges(settings)
     return settings
+
+
+RANGES: dict[str, tuple[float, float]] = {
+    "temperature": (0.0, 2.0),
+    "seed": (0, 2**31 - 1),
+    "repair_attempts": (0, 10),
+    "examples": (0, 12),
+}
+"""The values each number may take (the command-line flags have the same bounds)."""
+
+TRUE_WORDS, FALSE_WORDS = ("1", "true", "yes", "on"), ("0", "false", "no", "off")
+
+
+def _check_ranges(settings: Settings) -> None:
+    for name, (low, high) in RANGES.items():
+        value = getattr(settings, name)
+        if not low <= value <= high:
+            raise InputError(
+                f"{name} {value!r} is out of range: it takes {low:g} to {high:g} (set by "
+                f"TRAJADAPT_{name.upper()}, {settings.config_path} or a command-line flag)"
+            )
+
+
+def typed_value(name: str, value: Any, source: str) -> Any:
+    """``value`` as the type setting ``name`` has, or an InputError naming the setting and ``source``.
+
+    Strings (from the environment) are parsed strictly: a boolean is one of 1/true/yes/on or
+    0/false/no/off, a number is finite. Values already typed (from TOML) must have the type.
+    """
+    kind = ENV_FIELDS.get(name, dict if name == "backend_options" else str)
+    given = f"{source}={value!r}" if source.startswith("TRAJADAPT_") else f"{source}: {name} = {value!r}"
+    problem = f"{given} is not a valid {kind.__name__}"
+    if isinstance(value, str) and kind is not str:
+        value = _parsed(value.strip(), kind, problem)
+    if kind is bool and not isinstance(value, bool):
+        raise InputError(f"{problem} (use true or false)")
+    if kind is int and (isinstance(value, bool) or not isinstance(value, int)):
+        raise InputError(problem)
+    if kind is float:
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            raise InputError(f"{problem} (a finite number)")
+        value = float(value)
+    if kind in (str, dict) and not isinstance(value, kind):
+        raise InputError(problem if kind is str else f"{source}: {name} must be a table of backend options")
+    return value
+
+
+def _parsed(raw: str, kind: type, problem: str) -> Any:
+    if kind is bool:
+        if raw.lower() in TRUE_WORDS + FALSE_WORDS:
+            return raw.lower() in TRUE_WORDS
+        raise InputError(f"{problem} (use one of {', '.join(TRUE_WORDS + FALSE_WORDS)})")
+    try:
+        return kind(raw)
+    except ValueError as exc:
+        raise InputError(problem) from exc
 
 
 # The names each setting takes; tests check that they match the prompt conventions, modes and isolations.
@@ -150,23 +208,19 @@ def _from_toml(path: Path) -> dict[str, Any]:
         return {}
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, tomllib.TOMLDecodeError) as exc:
+    except (OSError, ValueError) as exc:  # TOMLDecodeError and UnicodeDecodeError are ValueErrors
         raise InputError(f"{path}: cannot be read as TOML ({exc})") from exc
     known = {f.name for f in fields(Settings)} - {"home"}
     unknown = sorted(set(data) - known)
     if unknown:
         raise InputError(f"{path}: unknown setting {unknown[0]!r}; known: {', '.join(sorted(known))}")
-    return data
+    return {name: typed_value(name, value, str(path)) for name, value in data.items()}
 
 
 def _from_environment() -> dict[str, Any]:
     values: dict[str, Any] = {}
-    for name, kind in ENV_FIELDS.items():
+    for name in ENV_FIELDS:
         raw = os.environ.get(f"TRAJADAPT_{name.upper()}")
-        if raw is None:
-            continue
-        try:
-            values[name] = raw.lower() in ("1", "true", "yes", "on") if kind is bool else kind(raw)
-        except ValueError as exc:
-            raise InputError(f"TRAJADAPT_{name.upper()}={raw!r} is not a valid {kind.__name__}") from exc
+        if raw is not None:
+            values[name] = typed_value(name, raw, f"TRAJADAPT_{name.upper()}")
     return values

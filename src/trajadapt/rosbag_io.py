@@ -20,7 +20,6 @@ Foxglove or RViz.
 
 from __future__ import annotations
 
-import shutil
 import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -30,6 +29,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import DependencyNotInstalled, InputError
 from trajadapt.trajectory import Trajectory
 
@@ -211,29 +211,34 @@ def resample_along_path(rows: Array, count: int) -> Array:
 
 
 def write_paths(
-    out: Path, fmt: str, paths: dict[str, Trajectory], frame: str = "map", start_ns: int = 0
+    out: Path,
+    fmt: str,
+    paths: dict[str, Trajectory],
+    frame: str = "map",
+    start_ns: int = 0,
+    replace: bool = False,
 ) -> None:
     """Write each trajectory as one nav_msgs/Path on its topic to ``out`` (``mcap`` or ``bag``).
 
-    Written to a temporary place first: on any error nothing is left at ``out``.
+    Staged in the system's temporary folder, then published whole (``atomic_files.publish_bytes``):
+    on any error, or a kill, nothing is left at ``out`` or beside it.
 
     Raises:
-        InputError: ``out`` exists, or an unknown format.
+        InputError: ``out`` exists (without ``replace``), its folder is missing, or an unknown format.
         DependencyNotInstalled: rosbags is not installed.
     """
     _rosbags()
-    if out.exists():
-        raise InputError(f"{out} exists already; choose another name or remove it")
-    with tempfile.TemporaryDirectory(dir=out.parent) as scratch:
+    if fmt not in ("mcap", "bag"):
+        raise InputError(f"unknown bag format {fmt!r}; use mcap or bag")
+    with tempfile.TemporaryDirectory(prefix="trajadapt-export-") as scratch:
         staged = Path(scratch) / "bag"
         if fmt == "mcap":
             _write_ros2(staged, paths, frame, start_ns)
-            shutil.move(next(staged.glob("*.mcap")), out)
-        elif fmt == "bag":
-            _write_ros1(staged.with_suffix(".bag"), paths, frame, start_ns)
-            shutil.move(staged.with_suffix(".bag"), out)
+            written = next(staged.glob("*.mcap"))
         else:
-            raise InputError(f"unknown bag format {fmt!r}; use mcap or bag")
+            written = staged.with_suffix(".bag")
+            _write_ros1(written, paths, frame, start_ns)
+        publish_bytes(out, written.read_bytes(), replace)
 
 
 def _path_message(types: Any, rows: Array, frame: str, start_ns: int, ros1: bool) -> Any:

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 from pathlib import Path
 
 import click
 
-from trajadapt.atomic_files import write_bytes_atomic, write_json_atomic
+from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import InputError
 from trajadapt.rosbag_io import times_from_speeds, write_paths
 from trajadapt.trajectory import Trajectory, read_json_file
@@ -27,29 +28,56 @@ FORMATS = ("mcap", "bag", "csv", "json")
 )
 @click.option("--frame", default="map", show_default=True, help="frame_id of the paths.")
 @click.option("--out", "-o", type=click.Path(path_type=Path), default=None,
-              help="Output file (default: RESULT_FILE with the format's suffix).")  # fmt: skip
+              help="Output file (default: RESULT_FILE with the format's suffix). An existing file is "
+              "refused unless --force.")  # fmt: skip
+@click.option(
+    "--force", is_flag=True, help="Replace the output file if it exists (never RESULT_FILE itself)."
+)
 def export(
-    result_file: Path, fmt: str, topic: str, original_topic: str, frame: str, out: Path | None
+    result_file: Path, fmt: str, topic: str, original_topic: str, frame: str, out: Path | None, force: bool
 ) -> None:
     """Write the adapted trajectory of RESULT_FILE (and the original) as nav_msgs/Path, CSV or JSON.
 
     Each pose's time stamp is when the robot reaches that waypoint leaving each one at its speed, so
-    the two paths play next to a recording. Nothing is written when anything fails.
+    the two paths play next to a recording. The output is created whole or not at all, and an
+    existing file is only replaced with --force.
     """
     adapted, original = _trajectories(result_file)
     out = out or result_file.with_name(result_file.name.removesuffix(".result.json") + f".adapted.{fmt}")
+    _check_target(out, result_file)
+    if not frame.isprintable() or not _encodes(frame):
+        raise InputError(f"--frame {frame!r} is not a printable UTF-8 name")
     if fmt in ("mcap", "bag"):
         if topic == original_topic:
             raise InputError("--topic and --original-topic must differ")
-        write_paths(out, fmt, {topic: adapted, original_topic: original}, frame)
+        write_paths(out, fmt, {topic: adapted, original_topic: original}, frame, replace=force)
     elif fmt == "csv":
-        write_bytes_atomic(out, _csv(adapted).encode("utf-8"))
+        publish_bytes(out, _csv(adapted).encode("utf-8"), replace=force)
     else:
         times = times_from_speeds(adapted.array)
         record = {"trajectory": adapted.to_rows(), "time_s": [round(float(t), 9) for t in times],
                   "original_trajectory": original.to_rows(), "frame": frame}  # fmt: skip
-        write_json_atomic(out, record)
+        publish_bytes(out, (json.dumps(record, indent=2) + "\n").encode("utf-8"), replace=force)
     click.echo(f"Wrote {out} ({fmt}: {len(adapted)} adapted and {len(original)} original waypoints)")
+
+
+def _check_target(out: Path, result_file: Path) -> None:
+    """Refuse a target that is the result file itself, or that names something other than a file."""
+    try:
+        clash = out.exists() and (out.is_dir() or (result_file.exists() and out.samefile(result_file)))
+    except OSError as exc:  # a name too long, a path through a file
+        raise InputError(f"{out}: cannot be written ({exc.strerror or exc})") from exc
+    if clash:
+        what = "a folder" if out.is_dir() else "RESULT_FILE itself"
+        raise InputError(f"{out} is {what}; give another output file with --out")
+
+
+def _encodes(text: str) -> bool:
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 def _trajectories(result_file: Path) -> tuple[Trajectory, Trajectory]:

@@ -106,3 +106,19 @@ def test_the_whole_answer_grammar_from_the_clause_list():
     assert not grammar.matches(
         answer("t = scale_speed(t, 0.65, near=detect_objects('lamp'))", "t = shift(t, 'left', 0.2)")
     )
+
+
+def test_an_answers_lines_are_attributed_to_their_clauses():
+    from trajadapt.clauses.grammar import attribute_lines
+
+    clauses = ("go up by 0.1 at a speed of 0.2", "slow down near the lamp", "keep the start fixed")
+    lines = [
+        "t = shift(t, 'up', 0.1)",
+        "t = set_speed(t, 0.2)",
+        "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+    ]
+    assert attribute_lines(lines, clauses, NAMES) == [
+        ("go up by 0.1 at a speed of 0.2", tuple(lines[:2])),
+        ("slow down near the lamp", (lines[2],)),
+    ]
+    assert attribute_lines(lines[:1], clauses, NAMES) is None

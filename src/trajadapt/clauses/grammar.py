@@ -193,3 +193,34 @@ def _choices(node: Node) -> tuple[Node, ...]:
 def _points(node: Node) -> bool:
     """Whether a choice writes a point (``point`` itself, or a call with one)."""
     return node == Ref("point") or Ref("point") in getattr(node, "parts", ())
+
+
+def attribute_lines(
+    lines: Sequence[str], clauses: Sequence[str], names: Sequence[str]
+) -> list[tuple[str, tuple[str, ...]]] | None:
+    """Which of ``lines`` (an answer's steps, in order) each clause got: one or two lines each.
+
+    A line belongs to a clause when it keeps to that clause's rules (``step_grammar``); clauses that
+    only keep something get none. None when the lines cannot be divided so (another grammar wrote them).
+    """
+    asking = [i for i, clause in enumerate(clauses) if not only_keeps(clause, names)]
+
+    def fits(index: int, part: Sequence[str]) -> bool:
+        clause = clauses[index]
+        grammar = step_grammar(
+            clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause)
+        )
+        return grammar.matches("\n".join(part))
+
+    def divide(k: int, start: int) -> list[tuple[str, tuple[str, ...]]] | None:
+        if k == len(asking):
+            return [] if start == len(lines) else None
+        for take in (1, 2):
+            part = tuple(lines[start : start + take])
+            if len(part) == take and fits(asking[k], part):
+                rest = divide(k + 1, start + take)
+                if rest is not None:
+                    return [(clauses[asking[k]], part), *rest]
+        return None
+
+    return divide(0, 0)

@@ -18,7 +18,8 @@ from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.case import Case
 from trajadapt.clauses.check import clause_findings
-from trajadapt.clauses.draft import ClauseRequests, draft_by_clause
+from trajadapt.clauses.grammar import MAX_CLAUSES, attribute_lines, clause_answer_grammar
+from trajadapt.clauses.split import split_clauses
 from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
 from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
@@ -260,6 +261,10 @@ class AdaptationResult:
 ProgressCallback = Callable[[str], None]
 
 
+def _count(found: list[tuple[str, list[str]]]) -> int:
+    return sum(len(findings) for _, findings in found)
+
+
 def skill_hints(code: str, problem: str) -> str:
     """The prompt lines of the skills used on the failing line, so that the repair gets the call right."""
     match = re.search(r"\(line (\d+)\)", problem)
@@ -331,47 +336,68 @@ class AdaptationSession:
         if not self.case.instruction:
             raise SessionStateError("the case has no instruction; give one with --instruction")
         self._start_log()
-        if self._drafts_by_clause():
-            return self._draft_by_clause()
-        return self._ask("draft", self.case.instruction)
-
-    def _drafts_by_clause(self) -> bool:
-        settings = self.settings
-        return (
-            settings.mode == "skills"
-            and settings.grammar
-            and settings.clause_steps
-            and self.backend.follows_grammar
-        )
-
-    def _draft_by_clause(self) -> Plan:
-        """The first answer written one clause at a time (``trajadapt.clauses``), read and recorded."""
-        how = ClauseRequests(
-            self.settings.axes, self.settings.examples, True, self.settings.temperature, self.settings.seed
-        )
-        check = self._clause_findings if self.settings.clause_check else None
-        drafted = draft_by_clause(self.case, self._complete, how, check)
-        for step in drafted.steps:
-            messages = step.request.messages if step.request else ()
-            self._log("clause", "\n".join(step.lines), {
-                "user_text": step.clause,
-                "request": [{"role": m.role, "content": m.content} for m in messages],
-                "answer": step.completion.text if step.completion else None,
-            }, step.error, {"llm": step.completion.duration_s if step.completion else None})  # fmt: skip
-        if not any(step.lines for step in drafted.steps):
-            return self._ask("draft", self.case.instruction)  # no clause got a step: the whole answer
-        plan = drafted.replanned(self._without_unasked_steps(drafted.plan).code)
-        self._left_out += [
-            f"\u201c{step.clause}\u201d: the model's step, run alone, contradicted the words; "
-            "asked once more, "
-            + ("kept the second answer" if step.kept_second else "kept the first (the second was no better)")
-            for step in drafted.steps
-            if step.asked_again
-        ]
-        self.messages.append(ChatMessage("assistant", plan.raw_text))
-        self._record(Turn("draft", self.case.instruction, plan, drafted.completion))
-        self._checkpoints.append((len(self.messages), len(self.turns), plan))
+        plan = self._ask("draft", self.case.instruction, first=True)
+        clauses = self._clauses()
+        if clauses and self.settings.clause_check:
+            plan = self._second_answer_by_clause(plan, clauses)
         return plan
+
+    def _clauses(self) -> tuple[str, ...] | None:
+        """The instruction's clauses when the first answer keeps a step per clause, else None.
+
+        That is in skills mode with the grammar, where the backend follows it (``clause_steps``).
+        """
+        settings = self.settings
+        if not (settings.mode == "skills" and settings.grammar and settings.clause_steps):
+            return None
+        if not self.backend.follows_grammar:
+            return None
+        clauses = split_clauses(self.case.instruction, self._names)
+        return clauses if len(clauses) <= MAX_CLAUSES else None
+
+    def _second_answer_by_clause(self, plan: Plan, clauses: tuple[str, ...]) -> Plan:
+        """One more first answer when a clause's step, run alone, contradicts that clause's words.
+
+        The answer with fewer findings is kept; a second answer that is not kept leaves nothing in the
+        conversation, the turns or the notes (the log keeps the exchange).
+        """
+        first = self._clause_findings(self.turns[-1], clauses)
+        if not first:
+            return plan
+        self.on_progress("a step contradicts its words, asking once more")
+        kept = (len(self.messages), len(self.turns), len(self._checkpoints), list(self._left_out))
+        problems = "\n".join(
+            f"- the step for \u201c{clause}\u201d: {'; '.join(found)}" for clause, found in first
+        )
+        self.messages.append(ChatMessage("user", render(
+            "clause_contradiction", problems=problems, instruction=self.case.instruction
+        )))  # fmt: skip
+        try:
+            second = self._ask("draft", problems, first=True)
+        except (AnswerParseError, BackendError):
+            second = None
+        again = self._clause_findings(self.turns[-1], clauses) if second is not None else None
+        if second is not None and again is not None and _count(again) < _count(first):
+            self._left_out.append(f"a step contradicted its words ({problems[2:]}); asked once more")
+            return second
+        del self.messages[kept[0] :], self.turns[kept[1] :], self._checkpoints[kept[2] :]
+        self._left_out = kept[3] + [
+            f"a step contradicts its words ({problems[2:]}); asked once more, no better"
+        ]
+        return plan
+
+    def _clause_findings(self, turn: Turn, clauses: tuple[str, ...]) -> list[tuple[str, list[str]]]:
+        """(clause, findings) for each clause whose lines in the turn's answer, run alone, contradict it."""
+        if turn.completion is None or turn.plan is None:
+            return []
+        lines = parse_answer(turn.completion.text).code.splitlines()[1:-1]
+        divided = attribute_lines(lines, clauses, self._names)
+        found = [(clause, self._findings_alone(clause, part)) for clause, part in divided or ()]
+        return [(clause, findings) for clause, findings in found if findings]
+
+    @property
+    def _names(self) -> list[str]:
+        return [obj.name for obj in self.case.scene.objects]
 
     def feedback(self, text: str) -> Plan:
         """Send the user's feedback with the original instruction and previous plan; get a new plan."""
@@ -496,10 +522,13 @@ class AdaptationSession:
             raise SessionStateError("there is no plan yet; call draft() first")
         return plan
 
-    def _ask(self, kind: TurnKind, user_text: str) -> Plan:
-        """Send the conversation (its last user message already in place) and parse the answer."""
+    def _ask(self, kind: TurnKind, user_text: str, first: bool = False) -> Plan:
+        """Send the conversation (its last user message already in place) and parse the answer.
+
+        ``first``: the first answer, under the grammar from the instruction's clauses where it applies.
+        """
         for retry in range(self.settings.format_retries + 1):
-            completion = self._complete()
+            completion = self._complete(first)
             self.messages.append(ChatMessage("assistant", completion.text))
             try:
                 plan = self._without_unasked_steps(parse_answer(completion.text))
@@ -534,7 +563,7 @@ class AdaptationSession:
         self._left_out = left_out + replaced + restored + heights + scoped + reread + guessed + placed
         return replace(plan, code=code) if self._left_out else plan
 
-    def _clause_findings(self, clause: str, lines: tuple[str, ...]) -> list[str]:
+    def _findings_alone(self, clause: str, lines: tuple[str, ...]) -> list[str]:
         """What a clause's lines, run alone on the original path, contradict in the clause's words."""
         code = "\n".join(["t = get_trajectory()", *lines, f"{RESULT_VARIABLE} = t"])
         options = ExecutionOptions(skills=True, positive_x=self.settings.axes.positive_x, accept_last=True)
@@ -551,15 +580,15 @@ class AdaptationSession:
             clause, measure_effect(self.case.trajectory, trajectory, self.case.scene.objects, axes), axes
         )
 
-    def _complete(self, request: ChatRequest | None = None) -> Completion:
-        """Send ``request`` (by default the conversation so far) and count its time and tokens."""
+    def _complete(self, first: bool = False) -> Completion:
+        """Send the conversation so far and count the time and tokens of the answer."""
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
-        request = request or ChatRequest(
+        request = ChatRequest(
             messages=tuple(self.messages),
             temperature=self.settings.temperature,
             max_tokens=self.settings.max_tokens,
             seed=self.settings.seed,
-            grammar=self._answer_grammar(),
+            grammar=self._answer_grammar(first),
         )
         started = time.perf_counter()
         completion = self.backend.complete(request)
@@ -569,10 +598,14 @@ class AdaptationSession:
         self._tokens["completion"] += completion.usage.completion_tokens or 0
         return completion
 
-    def _answer_grammar(self) -> str | None:
+    def _answer_grammar(self, first: bool = False) -> str | None:
+        """The scene's answer grammar; for the first answer, the one from the instruction's clauses."""
         if self.settings.mode != "skills" or not self.settings.grammar:
             return None
-        return answer_grammar(tuple(obj.name for obj in self.case.scene.objects)).to_gbnf()
+        clauses = self._clauses() if first else None
+        if clauses:
+            return clause_answer_grammar(clauses, tuple(self._names)).to_gbnf()
+        return answer_grammar(tuple(self._names)).to_gbnf()
 
     def _execute(self, plan: Plan) -> Outcome:
         skills = self.settings.mode == "skills"

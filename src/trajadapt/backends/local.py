@@ -224,8 +224,8 @@ class LocalBackend(Backend):
         prefix = request.messages[0].content if request.messages else ""
         with self._lock:
             started = time.perf_counter()
-            if states and prefix != self._prefix:
-                llama.reset()  # another fixed prefix (clause steps, then a repair): restore, do not re-read
+            if states and prefix != self._prefix and states.path_for(prefix).exists():
+                llama.reset()  # back to a saved prefix (after an explanation): restore it, do not re-read it
             self._prefix = prefix
             restored = states.restore(llama, prefix) if states else 0
             chunks, first_token_s = self._stream(llama, request)

@@ -1,10 +1,20 @@
-"""Reading the instruction as clauses: one splitter, and a first answer written one clause at a time.
+"""Reading the instruction as clauses: one splitter, each clause's own rules, and a check per clause.
 
-Run order of the stage: ``split_clauses`` -> per clause ``clause_request`` (its examples, its
-grammar) -> the backend -> ``step_lines`` -> ``compose_plan``. ``draft_by_clause`` runs it.
+The stage in run order: ``split_clauses`` (the clauses, and which only keep something) ->
+``clause_answer_grammar`` (the first answer keeps a step per clause, each naming only what its words
+give) -> ``attribute_lines`` (which lines of an answer each clause got) -> ``clause_findings`` (what a
+clause's step, run alone, contradicts in its words). The session runs it (``AdaptationSession.draft``).
 """
 
-from trajadapt.clauses.draft import ClauseDraft, ClauseRequests, ClauseStep, compose_plan, draft_by_clause
-from trajadapt.clauses.split import split_clauses
+from trajadapt.clauses.check import clause_findings
+from trajadapt.clauses.grammar import attribute_lines, clause_answer_grammar, step_grammar
+from trajadapt.clauses.split import only_keeps, split_clauses
 
-__all__ = ["ClauseDraft", "ClauseRequests", "ClauseStep", "compose_plan", "draft_by_clause", "split_clauses"]
+__all__ = [
+    "attribute_lines",
+    "clause_answer_grammar",
+    "clause_findings",
+    "only_keeps",
+    "split_clauses",
+    "step_grammar",
+]

@@ -48,12 +48,12 @@ class Settings:
             distance the instruction never gives by its vague word or the default, with a review note;
             also replace a step that does something other than what its clause asks (a part of the
             path, a speed near an object, a side, closer/away, a stated amount: see the README).
-        clause_steps: in skills mode with a grammar, write the first answer clause by clause: one
-            request per clause of the instruction, its step limited to that clause's objects and
-            numbers, the plan built from the steps (``trajadapt.clauses``).
+        clause_steps: in skills mode with a grammar, build the first answer's grammar from the
+            instruction's clauses: a step per clause, in order, each using only that clause's
+            objects, numbers and places (``trajadapt.clauses``).
         clause_check: with ``clause_steps``, run each clause's step alone, and when its measured
-            effect contradicts the clause's words, ask for that clause once more with what it did;
-            the answer with fewer contradictions is kept.
+            effect contradicts the clause's words, ask once more with what it did; the answer with
+            fewer contradictions is kept.
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the

@@ -32,6 +32,10 @@ class InputError(TrajadaptError):
     """A case, trajectory or scene file is missing or malformed."""
 
 
+class LogUnusable(InputError):
+    """The log file (logs.db) cannot be opened, read or written: the message names it and what to do."""
+
+
 class InvalidWaypoints(TrajadaptError, ValueError):
     """An array is not a trajectory: N x 4 (2 <= N <= 100,000), finite, within ±1e9, v >= 0.
 

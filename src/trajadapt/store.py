@@ -13,6 +13,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
+from trajadapt.errors import LogUnusable
 from trajadapt.safe_text import ANSWER_CHARS, safe_optional, safe_text
 
 MIGRATIONS = (
@@ -132,14 +133,38 @@ class Store:
     BUSY_TIMEOUT_S = 30.0
 
     def __init__(self, path: Path) -> None:
+        """Open (or create) the log at ``path``.
+
+        Raises:
+            LogUnusable: the file or its folder cannot be used (not a database, damaged, a folder,
+                written by a newer trajadapt, no permission), with what to do about it.
+        """
         self.path = path
-        path.parent.mkdir(parents=True, exist_ok=True)
         self._lock = threading.RLock()
-        self._connection = sqlite3.connect(path, check_same_thread=False, timeout=self.BUSY_TIMEOUT_S)
-        self._connection.row_factory = sqlite3.Row
-        self._connection.execute("PRAGMA journal_mode=WAL")
-        self._connection.execute("PRAGMA foreign_keys=ON")
-        self._migrate()
+        with self._mapped("open"):
+            path.parent.mkdir(parents=True, exist_ok=True)
+            self._connection = sqlite3.connect(path, check_same_thread=False, timeout=self.BUSY_TIMEOUT_S)
+        try:
+            with self._mapped("open"):
+                self._connection.row_factory = sqlite3.Row
+                self._connection.execute("PRAGMA journal_mode=WAL")
+                self._connection.execute("PRAGMA foreign_keys=ON")
+                self._migrate()
+        except LogUnusable:
+            self._connection.close()
+            raise
+
+    @contextmanager
+    def _mapped(self, doing: str) -> Iterator[None]:
+        """Foreign errors of the file or SQLite, as a LogUnusable that says what to do."""
+        try:
+            yield
+        except (sqlite3.Error, OSError) as exc:
+            raise LogUnusable(
+                f"cannot {doing} the log {self.path} ({type(exc).__name__}: {exc}); move the file aside "
+                "to start a new log, set TRAJADAPT_HOME to another folder, or turn logging off with "
+                "TRAJADAPT_LOG=false"
+            ) from exc
 
     def close(self) -> None:
         """Close the database."""
@@ -147,15 +172,29 @@ class Store:
             self._connection.close()
 
     def _migrate(self) -> None:
-        with self._transaction() as cursor:
-            version = cursor.execute("PRAGMA user_version").fetchone()[0]
-            for number, script in enumerate(MIGRATIONS[version:], start=version + 1):
-                cursor.executescript(script)
-                cursor.execute(f"PRAGMA user_version = {number}")
+        """Bring the schema up to date, one process at a time (a write lock before reading the version)."""
+        with self._lock:
+            connection = self._connection
+            connection.execute("BEGIN IMMEDIATE")
+            try:
+                version = int(connection.execute("PRAGMA user_version").fetchone()[0])
+                if version > len(MIGRATIONS):
+                    raise sqlite3.DatabaseError(
+                        f"its schema is version {version}, written by a newer trajadapt (this one knows "
+                        f"up to {len(MIGRATIONS)})"
+                    )
+                for number, script in enumerate(MIGRATIONS[version:], start=version + 1):
+                    for statement in filter(str.strip, script.split(";")):
+                        connection.execute(statement)
+                    connection.execute(f"PRAGMA user_version = {number}")
+                connection.commit()
+            except BaseException:
+                connection.rollback()
+                raise
 
     @contextmanager
     def _transaction(self) -> Iterator[sqlite3.Cursor]:
-        with self._lock:
+        with self._lock, self._mapped("write to"):
             cursor = self._connection.cursor()
             try:
                 yield cursor
@@ -167,7 +206,7 @@ class Store:
                 cursor.close()
 
     def _read(self, query: str, parameters: tuple[Any, ...]) -> list[sqlite3.Row]:
-        with self._lock:
+        with self._lock, self._mapped("read"):
             return self._connection.execute(query, parameters).fetchall()
 
     def start_session(self, new: NewSession) -> str:
@@ -225,7 +264,7 @@ class Store:
                 instruction=row["instruction"] or "",
                 backend=row["backend"] or "",
                 model=row["model"] or "",
-                settings=json.loads(row["settings_json"] or "null") or {},
+                settings=_loaded_dict(row["settings_json"]),
             )  # fmt: skip
             for row in rows
         ]
@@ -233,12 +272,12 @@ class Store:
     def session_case(self, session_id: str) -> Any:
         """The case a session worked on (OVITA form), or None for an unknown id."""
         rows = self._read("SELECT case_json FROM sessions WHERE id = ?", (session_id,))
-        return None if not rows else json.loads(rows[0][0])
+        return None if not rows else _loaded(rows[0][0])
 
     def request_of(self, exchange_id: int) -> Any:
         """The full request (messages) and answer of one exchange."""
         rows = self._read("SELECT request_json, answer FROM exchanges WHERE id = ?", (exchange_id,))
-        return None if not rows else {"request": json.loads(rows[0][0]), "answer": rows[0][1]}
+        return None if not rows else {"request": _loaded(rows[0][0]), "answer": rows[0][1]}
 
     def integrity_check(self) -> str:
         """SQLite's own check of the file: 'ok' when it is sound."""
@@ -264,6 +303,20 @@ def _clean(value: Any) -> Any:
     return value
 
 
+def _loaded(text: Any) -> Any:
+    """A stored JSON column; None where it is missing or not JSON (a damaged or foreign row)."""
+    try:
+        return json.loads(text) if isinstance(text, str | bytes) else None
+    except ValueError:
+        return None
+
+
+def _loaded_dict(text: Any) -> dict[str, Any]:
+    """A stored JSON object column, {} where it is missing, not JSON or not an object."""
+    value = _loaded(text)
+    return value if isinstance(value, dict) else {}
+
+
 def _record(row: sqlite3.Row) -> ExchangeRecord:
     return ExchangeRecord(
         id=row["id"],
@@ -277,6 +330,6 @@ def _record(row: sqlite3.Row) -> ExchangeRecord:
         plan=row["plan"] or "",
         code=row["code"] or "",
         error=row["error"] or "",
-        outcome=json.loads(row["outcome_json"] or "null") or {},
-        timings=json.loads(row["timings_json"] or "null") or {},
+        outcome=_loaded_dict(row["outcome_json"]),
+        timings=_loaded_dict(row["timings_json"]),
     )

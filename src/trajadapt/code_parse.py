@@ -15,14 +15,36 @@ from trajadapt.geometry import DIRECTION_SYNONYMS
 _PARSE_LOCK = threading.Lock()
 
 
+MAX_DEPTH = 200
+"""Deeper syntax trees are refused: skill code is a few levels deep, and the readers walk trees
+recursively (3,000 chained ``+`` or 50,000 unary minus would overflow the stack)."""
+
+
 def parse_code(source: str) -> ast.Module:
-    """``ast.parse(source)``, one thread at a time.
+    """``ast.parse(source)``, one thread at a time, refused past ``MAX_DEPTH`` levels.
 
     Raises:
-        SyntaxError: the source is not Python.
+        SyntaxError: the source is not Python, or too deeply nested to read.
     """
     with _PARSE_LOCK:
-        return ast.parse(source)
+        try:
+            tree = ast.parse(source)
+        except (RecursionError, MemoryError) as exc:
+            raise SyntaxError(f"the code is too deeply nested to read ({type(exc).__name__})") from exc
+    if _depth(tree) > MAX_DEPTH:
+        raise SyntaxError(f"the code is nested more than {MAX_DEPTH} levels deep")
+    return tree
+
+
+def _depth(tree: ast.AST) -> int:
+    """The deepest level of the tree, counted without recursion."""
+    deepest, stack = 0, [(tree, 1)]
+    while stack:
+        node, level = stack.pop()
+        deepest = max(deepest, level)
+        if level <= MAX_DEPTH:
+            stack.extend((child, level + 1) for child in ast.iter_child_nodes(node))
+    return deepest
 
 
 def assigned_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:

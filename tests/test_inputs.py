@@ -109,3 +109,23 @@ def test_trajectory_is_immutable() -> None:
     copy = Trajectory(source)
     source[0, 0] = 1
     assert copy.array[0, 0] == 0
+
+
+def test_a_csv_header_field_past_the_csv_limit_is_an_input_error(tmp_path):
+    from trajadapt.errors import InputError
+    from trajadapt.trajectory import load_trajectory_file as load_trajectory
+
+    path = tmp_path / "long.csv"
+    path.write_text("x,y,z," + "v" * 140_000 + "\n1,2,3,4\n")
+    with pytest.raises(InputError, match="line 1"):
+        load_trajectory(path)
+
+
+def test_a_csv_naming_a_column_twice_is_an_input_error(tmp_path):
+    from trajadapt.errors import InputError
+    from trajadapt.trajectory import load_trajectory_file as load_trajectory
+
+    path = tmp_path / "twice.csv"
+    path.write_text("x,y,z,v,x\n1,2,3,4,5\n0,1,2,3,4\n")
+    with pytest.raises(InputError, match="more than once"):
+        load_trajectory(path)

@@ -203,10 +203,18 @@ def load_trajectory_file(path: Path) -> Trajectory:
 def _read_csv_rows(path: Path) -> list[list[float]]:
     text = read_text_file(path)
     reader = csv.DictReader(text.splitlines(), restkey=EXTRA_FIELDS)
-    header = [(name or "").strip().lower() for name in reader.fieldnames or []]
+    try:
+        header = [(name or "").strip().lower() for name in reader.fieldnames or []]
+    except csv.Error as exc:  # a field longer than the csv module's limit (131,072 characters)
+        raise InputError(f"{path}, line 1: not a CSV header ({exc})") from None
     missing = [name for name in COLUMNS if name not in header]
     if missing:
         raise InputError(f"{path}: CSV header must name the columns x, y, z, v; missing {', '.join(missing)}")
+    twice = sorted({name for name in header if name in COLUMNS and header.count(name) > 1})
+    if twice:
+        raise InputError(
+            f"{path}: the CSV header names {', '.join(twice)} more than once; which one is meant?"
+        )
     rows = []
     try:
         for record in reader:

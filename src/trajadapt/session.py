@@ -25,6 +25,7 @@ from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
     AnswerParseError,
     BackendError,
+    CodeRejected,
     DependencyNotInstalled,
     InvalidTrajectory,
     SessionStateError,
@@ -40,6 +41,7 @@ from trajadapt.robot_limits import robot_constraints
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
+from trajadapt.sandbox.skill_program import check_skill_program
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.explain import explain_code
@@ -608,6 +610,9 @@ class AdaptationSession:
         return answer_grammar(tuple(self._names)).to_gbnf()
 
     def _execute(self, plan: Plan) -> Outcome:
+        refused = self._refused(plan)
+        if refused is not None:
+            return refused
         skills = self.settings.mode == "skills"
         options = ExecutionOptions(
             skills=skills, positive_x=self.settings.axes.positive_x, accept_last=skills
@@ -635,6 +640,21 @@ class AdaptationSession:
         }, problem, {"exec": result.duration_s})  # fmt: skip
         self._last_stdout = result.stdout
         return outcome
+
+    def _refused(self, plan: Plan) -> Failure | None:
+        """Where the answer was held to the grammar, code that is not a skill program never runs.
+
+        That is skills mode with the grammar, sent to a backend that follows it: a server that ignored
+        the grammar it was sent is caught here. Other backends may write numpy (the prompt's rule 5).
+        """
+        if not (self.settings.mode == "skills" and self.settings.grammar and self.backend.follows_grammar):
+            return None
+        try:
+            check_skill_program(plan.code)
+        except CodeRejected as exc:
+            self._log("execution", plan.code, {"ok": False}, str(exc), {})
+            return Failure.of("CodeRejected", f"{exc} (the answer must be a program of skill calls)")
+        return None
 
     def _enforce_constraints(self, trajectory: Trajectory) -> Outcome:
         """The trajectory if it keeps the constraints (projected onto them if asked), else the problem."""

@@ -76,3 +76,16 @@ def test_clause_steps_off_asks_under_the_scenes_grammar(sandbox):
     backend = GrammarFollowing(answers=[answer(LEFT, SLOWER)])
     AdaptationSession(case(), backend, sandbox, SessionSettings(clause_steps=False)).draft()
     assert "steps-c0" not in backend.requests[0].grammar
+
+
+def test_code_that_is_not_a_skill_program_never_runs_where_the_grammar_held(sandbox):
+    numpy_code = "t = get_trajectory()\nt[:, 0] += 0.1\nmodified_trajectory = t"
+    backend = GrammarFollowing(
+        answers=[json.dumps({"high_level_plan": "1) left", "python_code": numpy_code})]
+    )
+    session = AdaptationSession(
+        case(), backend, sandbox, SessionSettings(repair_attempts=0, clause_check=False)
+    )
+    session.draft()
+    result = session.approve()
+    assert not result.ok and "skill calls" in str(result.error)

@@ -32,6 +32,7 @@ from trajadapt.sandbox.guard import check_code
 from trajadapt.sandbox.lockdown import RESULT_FD, ChildLimits, lock_down, verified_layers
 from trajadapt.sandbox.protocol import (
     MAX_CHILD_BYTES,
+    MAX_NOTES,
     ChildResult,
     ProtocolError,
     decode_json,
@@ -76,19 +77,35 @@ def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> tuple[Chil
         os.close(read_fd)
         _child(job, modules, write_fd)
     os.close(write_fd)
-    payload, timed_out = _read_with_deadline(read_fd, started + float(job["wall_s"]))  # None: too large
+    deadline = started + float(job["wall_s"])
+    payload, timed_out = _read_with_deadline(read_fd, deadline)  # None: too large
+    if not timed_out:
+        timed_out = not _ends_by(pid, deadline)  # it closed the pipe and went on: the deadline holds
     if timed_out:
         with contextlib.suppress(ProcessLookupError):
             os.kill(pid, signal.SIGKILL)
     layers = verified_layers(pid)  # before reaping: a zombie's status still shows its layers
-    _, status = os.waitpid(pid, 0)
+    _, status, usage = os.wait4(pid, 0)
     if payload is None:
         result = error_result(
             "Crash", f"the code's process sent more than {MAX_CHILD_BYTES} bytes; discarded"
         )
+    elif payload:
+        result = _decode(payload)
     else:
-        result = _decode(payload) if payload else _death_report(status, timed_out, job)
+        result = _death_report(status, timed_out, usage.ru_utime + usage.ru_stime, job)
     return result, time.perf_counter() - started, layers
+
+
+def _ends_by(pid: int, deadline: float) -> bool:
+    """Whether the child has ended (or ends) before the deadline; it is not reaped here."""
+    while True:
+        with contextlib.suppress(ChildProcessError):
+            if os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None:
+                return True
+        if time.perf_counter() >= deadline:
+            return False
+        time.sleep(0.005)
 
 
 def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes | None, bool]:
@@ -120,14 +137,15 @@ def _decode(payload: bytes) -> ChildResult:
         return error_result("Crash", f"the code's process sent a malformed result ({exc}); it was discarded")
 
 
-def _death_report(status: int, timed_out: bool, job: dict[str, Any]) -> ChildResult:
+def _death_report(status: int, timed_out: bool, cpu_s: float, job: dict[str, Any]) -> ChildResult:
     if timed_out:
         return error_result(
             "Timeout", f"the code did not finish within {job['wall_s']:g} s (wall clock) and was stopped"
         )
     if os.WIFSIGNALED(status):
         number = os.WTERMSIG(status)
-        if number == signal.SIGXCPU:
+        used_it_all = number == signal.SIGKILL and cpu_s >= 0.95 * float(job["cpu_s"])  # SIGXCPU ignored
+        if number == signal.SIGXCPU or used_it_all:
             return error_result(
                 "Timeout", f"the code used more than {job['cpu_s']:g} s of CPU time and was stopped"
             )
@@ -181,8 +199,15 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
         message = "; ".join(part for part in (_describe(exc), calls.hint()) if part)
         failed = error_result(_kind(exc), safe_text(message), _generated_line(exc))
     else:
-        return ChildResult(True, rows, output.text(), None, notes)
-    return ChildResult(False, None, output.text(), failed.error, notes)
+        return ChildResult(True, rows, output.text(), None, _capped(notes))
+    return ChildResult(False, None, output.text(), failed.error, _capped(notes))
+
+
+def _capped(notes: list[str]) -> list[str]:
+    """At most ``MAX_NOTES`` notes: the first ones, and how many more there were."""
+    if len(notes) <= MAX_NOTES:
+        return notes
+    return [*notes[: MAX_NOTES - 1], f"... and {len(notes) - MAX_NOTES + 1} more notes like these"]
 
 
 def _namespace(

@@ -40,3 +40,20 @@ def test_more_notes_than_the_protocol_carries_are_capped_not_malformed(bare):
     result = bare.run(code, line_trajectory(), Scene(), options)
     assert result.ok, result.error
     assert len(result.notes) == 20 and "more notes" in result.notes[-1]
+
+
+def test_a_worker_started_from_a_thread_outlives_that_thread(bare):
+    import threading
+
+    bare.close()
+    starter = threading.Thread(
+        target=lambda: bare.run("modified_trajectory = get_trajectory()", line_trajectory(), Scene())
+    )
+    starter.start()
+    starter.join()
+    worker = bare._process
+    assert worker is not None
+    time.sleep(0.5)
+    assert worker.poll() is None, "the worker died with the thread that started it"
+    assert bare.run("modified_trajectory = get_trajectory()", line_trajectory(), Scene()).ok
+    assert bare._process is worker

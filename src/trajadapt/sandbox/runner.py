@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import concurrent.futures
 import contextlib
 import functools
 import json
@@ -258,7 +259,17 @@ def _worker_environment() -> dict[str, str]:
     }
 
 
+_STARTER = concurrent.futures.ThreadPoolExecutor(max_workers=1, thread_name_prefix="sandbox-starter")
+"""The one thread that starts workers. bubblewrap's --die-with-parent is PR_SET_PDEATHSIG, which fires
+when the *thread* that started the worker ends: started from a request's thread (the review page), a
+worker died with that request. This thread lives until the process ends, and so do the workers."""
+
+
 def _start(command: list[str]) -> subprocess.Popen[str]:
+    return _STARTER.submit(_popen, command).result()
+
+
+def _popen(command: list[str]) -> subprocess.Popen[str]:
     return subprocess.Popen(
         command,
         stdin=subprocess.PIPE,

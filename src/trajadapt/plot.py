@@ -17,7 +17,7 @@ from mpl_toolkits.mplot3d import Axes3D  # noqa: E402
 
 from trajadapt.atomic_files import write_bytes_atomic  # noqa: E402
 from trajadapt.geometry import AxisConvention  # noqa: E402
-from trajadapt.scene import Scene  # noqa: E402
+from trajadapt.scene import Scene, SceneObject  # noqa: E402
 from trajadapt.trajectory import Trajectory  # noqa: E402
 
 ORIGINAL_COLOUR = "tab:blue"
@@ -60,6 +60,22 @@ def _png_bytes(figure: Figure) -> bytes:
     return buffer.getvalue()
 
 
+MAX_LABELS = 30
+"""Objects named on a plot: the ones nearest the original path (thousands of labels take minutes)."""
+
+
+def labelled(scene: Scene, original: Trajectory) -> list[SceneObject]:
+    """The objects to name on the plot: all of them, or the ``MAX_LABELS`` nearest the original path."""
+    if len(scene.objects) <= MAX_LABELS:
+        return list(scene.objects)
+    positions = original.positions
+    distance = [
+        float(np.min(np.linalg.norm(positions - np.asarray(obj.position), axis=1))) for obj in scene.objects
+    ]
+    nearest = sorted(range(len(scene.objects)), key=lambda i: distance[i])[:MAX_LABELS]
+    return [scene.objects[i] for i in sorted(nearest)]
+
+
 def _draw_top_view(
     ax: Axes, original: Trajectory, adapted: Trajectory | None, scene: Scene, axes: AxisConvention
 ) -> None:
@@ -73,8 +89,10 @@ def _draw_top_view(
         ax.plot(xy[:, 0], xy[:, 1], "-o", color=colour, markersize=2, label=label)
         ax.scatter(xy[0, 0], xy[0, 1], color=colour, marker="s", s=40)
         ax.scatter(xy[-1, 0], xy[-1, 1], color=colour, marker="*", s=90)
-    for obj in scene.objects:
-        ax.scatter(obj.x, obj.y, color="black", marker="^")
+    if scene.objects:
+        where = np.array([obj.position for obj in scene.objects])
+        ax.scatter(where[:, 0], where[:, 1], color="black", marker="^")
+    for obj in labelled(scene, original):
         ax.annotate(obj.name, (obj.x, obj.y), textcoords="offset points", xytext=(4, 4), fontsize=8)
     if axes.positive_x == "left":
         ax.invert_xaxis()  # seen from above with front up, +X left must point left
@@ -95,8 +113,10 @@ def _draw_3d(ax: Axes3D, original: Trajectory, adapted: Trajectory | None, scene
         ax.plot(p[:, 0], p[:, 1], p[:, 2], "-o", color=colour, markersize=2, label=label)
         ax.scatter(*p[0], color=colour, marker="s", s=40)
         ax.scatter(*p[-1], color=colour, marker="*", s=90)
-    for obj in scene.objects:
-        ax.scatter(obj.x, obj.y, obj.z, color="black", marker="^")
+    if scene.objects:
+        where = np.array([obj.position for obj in scene.objects])
+        ax.scatter(where[:, 0], where[:, 1], where[:, 2], color="black", marker="^")
+    for obj in labelled(scene, original):
         ax.text(obj.x, obj.y, obj.z, obj.name, fontsize=8)
     ax.set_xlabel("x")
     ax.set_ylabel("y")

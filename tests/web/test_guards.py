@@ -118,3 +118,33 @@ def test_uploads_nested_too_deep_or_with_huge_integers_are_explained(client: Tes
     for body in (b"[" * 5000 + b"]" * 5000, b'{"trajectory": [[' + b"9" * 5000 + b", 0, 0, 1]]}"):
         response = client.post("/api/upload?name=x.json", content=body)
         assert response.status_code == 400 and "not JSON" in response.json()["error"]
+
+
+@pytest.mark.parametrize(
+    "header", ["[::1]evil.example", "127.0.0.1:80:80", "localhost evil", "127.0.0.1:99999999", "a_b.com", ""]
+)
+def test_a_host_header_that_is_not_exactly_a_name_and_port_names_no_host(header: str) -> None:
+    assert host_name(header) == ""
+
+
+def test_a_page_of_another_site_cannot_change_a_session(client: TestClient) -> None:
+    state = client.post("/api/sessions", json={"case": CASE, "instruction": "go left", "name": "line"}).json()
+    wait_idle(client, state["id"])
+    for headers in ({"origin": "http://evil.example"}, {"origin": "null"}, {"sec-fetch-site": "cross-site"}):
+        refused = client.post(f"/api/sessions/{state['id']}/approve", headers=headers)
+        assert refused.status_code == 403, headers
+    own = client.post(f"/api/sessions/{state['id']}/approve", headers={"origin": "http://127.0.0.1:8765"})
+    assert own.status_code != 403
+    assert (
+        client.get(f"/api/sessions/{state['id']}", headers={"origin": "http://evil.example"}).status_code
+        == 200
+    )
+
+
+def test_every_answer_forbids_framing(client: TestClient) -> None:
+    for path in ("/", "/api/sessions"):
+        headers = client.get(path).headers
+        assert (
+            headers["x-frame-options"] == "DENY"
+            and "frame-ancestors 'none'" in headers["content-security-policy"]
+        )

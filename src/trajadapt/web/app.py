@@ -32,6 +32,8 @@ from trajadapt.web.guards import (
     BodyLimit,
     attachment,
     install_host_check,
+    install_origin_check,
+    install_security_headers,
     install_token_check,
 )
 from trajadapt.web.history import stored_session
@@ -109,7 +111,9 @@ def create_app(services: Services, token: str | None = None, allowed_hosts: Coll
     state = ServerState(services, token)
     _install_errors(app)
     install_token_check(app, token)
+    install_origin_check(app, (*LOOPBACK_HOSTS, *allowed_hosts))
     install_host_check(app, (*LOOPBACK_HOSTS, *allowed_hosts))
+    install_security_headers(app)
     app.add_middleware(BodyLimit, limit=MAX_UPLOAD_BYTES)
     _page_routes(app)
     _case_routes(app, state)

@@ -1,7 +1,15 @@
 """What stands between the review server and a hostile browser or client.
 
 - **Allowed hosts**: a request whose ``Host`` header is not one of the server's names is refused
-  (421), so a page on another site cannot reach a loopback server through DNS rebinding.
+  (421), so a page on another site cannot reach a loopback server through DNS rebinding. The header
+  is parsed strictly: a name or address, then at most ``:port`` (``[::1]evil.example`` is no host).
+- **Origin**: a state-changing request (POST, PUT, PATCH, DELETE) that comes from a page of another
+  origin (its ``Origin`` is not the server's, or ``Sec-Fetch-Site`` says cross-site) is refused (403),
+  so another site cannot approve a session with a no-cors form post.
+- **Framing**: every answer forbids being framed by another origin (``X-Frame-Options: DENY``,
+  ``frame-ancestors 'none'``), and says not to guess content types or send referrers.
+- **Body deadline**: a body not received within ``BODY_TIMEOUT_S`` is refused (408) and its
+  connection's memory released, so half-sent bodies cannot hold the server.
 - **Body limit**: no request body larger than ``MAX_BODY_BYTES`` is read, whether it declares its
   length or streams it (413).
 - **Token**: with a token set, every ``/api/`` request must carry it; the comparison takes constant
@@ -11,6 +19,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import hmac
 import re
 from collections.abc import Awaitable, Callable, Collection, MutableMapping
@@ -21,6 +30,19 @@ from fastapi import FastAPI, Request
 from fastapi.responses import JSONResponse, Response
 
 MAX_BODY_BYTES = 8 * 1024 * 1024
+BODY_TIMEOUT_S = 30.0
+STATE_CHANGING = frozenset({"POST", "PUT", "PATCH", "DELETE"})
+SECURITY_HEADERS = {
+    "x-frame-options": "DENY",
+    "content-security-policy": "frame-ancestors 'none'",
+    "x-content-type-options": "nosniff",
+    "referrer-policy": "no-referrer",
+}
+HOST = re.compile(
+    r"^(?:\[(?P<ipv6>[0-9a-f:.]+)\](?::\d{1,5})?"  # [::1] or [::1]:8765
+    r"|(?P<bare>[0-9a-f]*:[0-9a-f]*:[0-9a-f:.]*)"  # ::1, unbracketed and so without a port
+    r"|(?P<name>[a-z0-9](?:[a-z0-9.-]*[a-z0-9])?\.?)(?::\d{1,5})?)$"
+)
 LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1")
 TOKEN_HEADER = "x-trajadapt-token"
 
@@ -32,12 +54,49 @@ ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
 
 def host_name(header: str) -> str:
-    """The host part of a ``Host`` header, lower case, without port, brackets or a trailing dot."""
-    header = header.strip().lower()
-    if header.startswith("["):  # [::1]:8765
-        return header[1 : header.find("]")] if "]" in header else header
-    name = header.rsplit(":", 1)[0] if header.count(":") == 1 else header
-    return name.rstrip(".")
+    """The host part of a ``Host`` header, lower case, without port, brackets or a trailing dot.
+
+    '' for anything that is not exactly a host name or address and an optional port.
+    """
+    found = HOST.match(header.strip().lower())
+    if found is None:
+        return ""
+    return found.group("ipv6") or found.group("bare") or (found.group("name") or "").rstrip(".")
+
+
+def install_security_headers(app: FastAPI) -> None:
+    """Add ``SECURITY_HEADERS`` to every answer."""
+
+    @app.middleware("http")
+    async def add_headers(request: Request, call_next: Callable[[Request], Awaitable[Response]]) -> Response:
+        response = await call_next(request)
+        for name, value in SECURITY_HEADERS.items():
+            response.headers.setdefault(name, value)
+        return response
+
+
+def install_origin_check(app: FastAPI, allowed: Collection[str]) -> None:
+    """Refuse state-changing requests sent by a page of another origin."""
+    names = {host_name(name) for name in allowed}
+
+    @app.middleware("http")
+    async def check_origin(request: Request, call_next: Callable[[Request], Awaitable[Response]]) -> Response:
+        if request.method in STATE_CHANGING and not same_origin(request.headers, names):
+            return JSONResponse(
+                {"error": "a page of another site cannot change this server's sessions"}, status_code=403
+            )
+        return await call_next(request)
+
+
+def same_origin(headers: Any, names: Collection[str]) -> bool:
+    """Whether a request comes from the server's own page, or from no page at all (a script, curl)."""
+    if headers.get("sec-fetch-site", "").lower() == "cross-site":
+        return False
+    origin = headers.get("origin")
+    if origin is None:
+        return True
+    scheme, _, rest = origin.strip().lower().partition("://")
+    return scheme in ("http", "https") and host_name(rest) in names
 
 
 def install_host_check(app: FastAPI, allowed: Collection[str]) -> None:
@@ -98,7 +157,13 @@ class BodyLimit:
         if declared > self.limit:
             await _refuse(413, _too_big(declared, self.limit), scope, receive, send)
             return
-        body = await _read_body(receive, self.limit)
+        try:
+            body = await asyncio.wait_for(_read_body(receive, self.limit), BODY_TIMEOUT_S)
+        except TimeoutError:
+            await _refuse(
+                408, f"the request body did not arrive within {BODY_TIMEOUT_S:g} s", scope, receive, send
+            )
+            return
         if body is None:
             await _refuse(413, _too_big(self.limit + 1, self.limit), scope, receive, send)
             return

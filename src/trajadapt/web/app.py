@@ -9,6 +9,7 @@ JSON ``{"error": "..."}`` in words; a stack trace never reaches the page.
 from __future__ import annotations
 
 import json
+import time
 from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,7 +38,7 @@ from trajadapt.web.guards import (
     install_token_check,
 )
 from trajadapt.web.history import stored_session
-from trajadapt.web.live import Jobs, LiveSession, add_version, result_file_name, work_folder
+from trajadapt.web.live import Jobs, LiveSession, add_version, make_room, result_file_name, work_folder
 from trajadapt.web.services import Services
 
 STATIC = Path(__file__).parent / "static"
@@ -267,6 +268,7 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
 
 
 def _new_live(state: ServerState, case: Case, limits: Constraints, robot: str | None) -> LiveSession:
+    make_room(state.live)
     session = state.services.new_session(case, limits, robot)
     live = LiveSession(case=case, session=session, status="ready")
     session.report_progress_to(live.say)
@@ -295,6 +297,7 @@ def _find(state: ServerState, session_id: str) -> LiveSession:
             f"session {session_id!r} is not open on this server; a stored session can be viewed, not "
             "changed: start a new one with the same case"
         )
+    live.used = time.monotonic()
     return live
 
 

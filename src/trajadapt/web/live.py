@@ -66,6 +66,7 @@ class LiveSession:
     simulation: dict[str, Any] | None = None
     job: int = 0
     lock: threading.Lock = field(default_factory=threading.Lock)  # held by the job touching ``session``
+    used: float = field(default_factory=time.monotonic)  # when the page last asked about it
 
     def to_dict(self) -> dict[str, Any]:
         """The state the page draws."""
@@ -165,3 +166,26 @@ def work_folder(root: Path, live: LiveSession) -> Path:
     folder = root / live.id
     folder.mkdir(parents=True, exist_ok=True)
     return folder
+
+
+MAX_LIVE_SESSIONS = 32
+"""Sessions a server holds in memory at once; the log keeps every one after it is let go."""
+IDLE_EXPIRY_S = 3600.0
+"""A session nobody asked about for this long is let go (it can still be viewed from the log)."""
+
+
+def make_room(live: dict[str, LiveSession], now: float | None = None) -> None:
+    """Let go of expired sessions, then of the least recently used idle ones, to hold one more.
+
+    Raises:
+        SessionStateError: every session held is at work (a job running); try again later.
+    """
+    now = time.monotonic() if now is None else now
+    idle = sorted((s for s in list(live.values()) if s.status != "working"), key=lambda s: s.used)
+    for session in idle:
+        if now - session.used > IDLE_EXPIRY_S or len(live) >= MAX_LIVE_SESSIONS:
+            live.pop(session.id, None)
+    if len(live) >= MAX_LIVE_SESSIONS:
+        raise SessionStateError(
+            f"the server is working on {len(live)} sessions already; try again when one is done"
+        )

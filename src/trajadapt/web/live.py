@@ -168,7 +168,7 @@ def work_folder(root: Path, live: LiveSession) -> Path:
     return folder
 
 
-MAX_LIVE_SESSIONS = 32
+MAX_LIVE_SESSIONS = 64
 """Sessions a server holds in memory at once; the log keeps every one after it is let go."""
 IDLE_EXPIRY_S = 3600.0
 """A session nobody asked about for this long is let go (it can still be viewed from the log)."""

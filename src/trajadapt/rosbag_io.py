@@ -30,7 +30,8 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.atomic_files import publish_bytes
-from trajadapt.errors import DependencyNotInstalled, InputError
+from trajadapt.errors import DependencyNotInstalled, InputError, TrajadaptError
+from trajadapt.recording_limits import check_declared_sizes
 from trajadapt.trajectory import Trajectory
 
 Array = npt.NDArray[np.float64]
@@ -77,23 +78,49 @@ def read_bag_trajectory(path: Path, topic: str | None, waypoints: int | None = N
         DependencyNotInstalled: rosbags is not installed.
     """
     highlevel = _rosbags()
+    check_declared_sizes(path)
     try:
         with highlevel.AnyReader([path]) as reader:
             topics = {name: info.msgtype for name, info in reader.topics.items()}
-            connections = [c for c in reader.connections if c.topic == topic]
             _check_topic(path, topic, topics)
-            messages = [
-                (stamp, reader.deserialize(raw, c.msgtype)) for c, stamp, raw in reader.messages(connections)
-            ]
-    except (highlevel.AnyReaderError, FileNotFoundError, OSError) as exc:
-        raise InputError(f"{path}: cannot be read as a ROS recording ({exc})") from exc
-    if not messages:
-        raise InputError(f"{path}: topic {topic} has no messages")
-    msgtype = topics[str(topic)]
-    rows, frame, notes = READERS[msgtype](messages, waypoints)
+            msgtype = topics[str(topic)]
+            messages, count = _messages(reader, [c for c in reader.connections if c.topic == topic], msgtype)
+            if not messages:
+                raise InputError(f"{path}: topic {topic} has no messages")
+            rows, frame, notes = READERS[msgtype](messages, waypoints)
+    except TrajadaptError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - a recording is untrusted input: any failure reading it is one
+        problem = f"{type(exc).__name__}: {str(exc)[:300]}"
+        raise InputError(f"{path}: cannot be read as a ROS recording ({problem})") from exc
+    if count > 1 and msgtype != POSE_TYPE:
+        notes = [f"{count} messages on the topic: the last one was read", *notes]
     return BagTrajectory(
         Trajectory.from_rows(rows, f"{path} {topic}"), str(topic), msgtype, frame, tuple(notes)
     )
+
+
+MAX_MESSAGES = 50_000
+"""Messages read from one topic (a PoseStamped stream is resampled to ``DEFAULT_WAYPOINTS`` anyway)."""
+
+
+def _messages(reader: Any, connections: list[Any], msgtype: str) -> tuple[list[tuple[int, Any]], int]:
+    """The topic's messages as (time, message), and how many there were.
+
+    For a Path or a MultiDOFJointTrajectory only the last one is read, so many large plans cost no
+    memory; a PoseStamped stream is read whole, up to ``MAX_MESSAGES``.
+    """
+    kept: list[tuple[int, Any, bytes]] = []
+    count = 0
+    for connection, stamp, raw in reader.messages(connections):
+        count += 1
+        if count > MAX_MESSAGES:
+            raise InputError(f"more than {MAX_MESSAGES} messages on the topic; cut the recording first")
+        if msgtype == POSE_TYPE or not kept:
+            kept.append((stamp, connection, raw))
+        else:
+            kept[-1] = (stamp, connection, raw)
+    return [(stamp, reader.deserialize(raw, c.msgtype)) for stamp, c, raw in kept], count
 
 
 def _check_topic(path: Path, topic: str | None, topics: dict[str, str]) -> None:
@@ -124,9 +151,7 @@ def _from_path(messages: list[tuple[int, Any]], _waypoints: int | None) -> tuple
         raise InputError("the last Path message on the topic has no poses")
     positions = np.array([_position(p.pose) for p in message.poses])
     times = np.array([_seconds(p.header.stamp) for p in message.poses])
-    notes = (
-        [f"{len(messages)} Path messages on the topic: the last one was read"] if len(messages) > 1 else []
-    )
+    notes: list[str] = []
     rows, timed = rows_from_times(positions, times)
     if not timed:
         notes.append(f"the poses carry no increasing times: speed {NOMINAL_SPEED} everywhere")

@@ -305,3 +305,20 @@ def test_a_failure_is_typed_and_the_report_reads_its_kind_not_its_words(
     record["error"] = "something else entirely"  # the kind, not the words, names the failure
     assert failure_kind(record) == "error: TypeError"
     assert failure_kind({"status": "error", "error": "ValueError: old file"}) == "error: ValueError"
+
+
+def test_a_rejected_second_answer_leaves_the_first_result_intact(simple_case: Case, sandbox: Sandbox) -> None:
+    right = "t = get_trajectory()\nprint('{tag}')\nt = shift(t, 'right', 0.2)\nmodified_trajectory = t"
+    session, backend = make_session(
+        simple_case, sandbox,
+        answer("1) First.", right.format(tag="first answer")),
+        answer("1) Second.", right.format(tag="second answer")),
+        repair_contradictions=True, leave_out_unasked=False,
+    )  # fmt: skip
+    session.draft()
+    result = session.approve()
+    assert len(backend.requests) == 2  # "go left" moved right: asked once more, and no better
+    assert result.plan is not None and result.plan.steps == ("First.",)
+    assert session.plan is not None and session.plan.steps == ("First.",)
+    assert "first answer" in result.stdout and "second answer" not in result.stdout
+    assert len(session.versions) == 1 and len(session.turns) == 1

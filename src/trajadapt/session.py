@@ -367,7 +367,7 @@ class AdaptationSession:
         if not first:
             return plan
         self.on_progress("a step contradicts its words, asking once more")
-        kept = (len(self.messages), len(self.turns), len(self._checkpoints), list(self._left_out))
+        kept = self._mark()
         problems = "\n".join(
             f"- the step for \u201c{clause}\u201d: {'; '.join(found)}" for clause, found in first
         )
@@ -382,9 +382,10 @@ class AdaptationSession:
         if second is not None and again is not None and _count(again) < _count(first):
             self._left_out.append(f"a step contradicted its words ({problems[2:]}); asked once more")
             return second
-        del self.messages[kept[0] :], self.turns[kept[1] :], self._checkpoints[kept[2] :]
-        self._left_out = kept[3] + [
-            f"a step contradicts its words ({problems[2:]}); asked once more, no better"
+        self._rewind_to(kept)
+        self._left_out = [
+            *self._left_out,
+            f"a step contradicts its words ({problems[2:]}); asked once more, no better",
         ]
         return plan
 
@@ -458,6 +459,7 @@ class AdaptationSession:
         if not flags:
             return plan, trajectory
         self.on_progress("the result contradicts the instruction, asking once more")
+        kept = self._mark()
         problems = "\n".join(f"- {flag}" for flag in flags)
         self.messages.append(ChatMessage("user", render(
             "contradiction", problems=problems, instruction=self.case.instruction
@@ -465,11 +467,25 @@ class AdaptationSession:
         try:
             second = self._ask("repair", "; ".join(flags))
         except (AnswerParseError, BackendError):
+            self._rewind_to(kept)
             return plan, trajectory
         outcome = self._execute(second)
         if isinstance(outcome, Trajectory) and len(self._effect(outcome)["contradictions"]) < len(flags):
             return second, outcome
+        self._rewind_to(kept)  # the first result stands, with its own notes, output and plan
         return plan, trajectory
+
+    def _mark(self) -> tuple[Any, ...]:
+        """What a second answer that is not kept must leave as it was."""
+        return (
+            len(self.messages), len(self.turns), len(self._checkpoints), list(self._left_out),
+            self._last_stdout, self._last_notes, self._last_moves,
+        )  # fmt: skip
+
+    def _rewind_to(self, mark: tuple[Any, ...]) -> None:
+        messages, turns, checkpoints, left_out, stdout, notes, moves = mark
+        del self.messages[messages:], self.turns[turns:], self._checkpoints[checkpoints:]
+        self._left_out, self._last_stdout, self._last_notes, self._last_moves = left_out, stdout, notes, moves
 
     def explain(self) -> Explanation:
         """The current code in plain words: from the skills when it is skill calls, else asked of the model.

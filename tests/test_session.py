@@ -322,3 +322,16 @@ def test_a_rejected_second_answer_leaves_the_first_result_intact(simple_case: Ca
     assert session.plan is not None and session.plan.steps == ("First.",)
     assert "first answer" in result.stdout and "second answer" not in result.stdout
     assert len(session.versions) == 1 and len(session.turns) == 1
+
+
+def test_undo_takes_back_the_words_of_the_feedback_it_drops(simple_case: Case, sandbox: Sandbox) -> None:
+    left = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
+    session, _ = make_session(
+        simple_case, sandbox, answer("1) Left.", left), answer("1) Away.", left), leave_out_unasked=False
+    )
+    session.draft()
+    session.feedback("stay away from the box")
+    session.rewind(0)
+    result = session.approve()  # moves towards the box: only words still said may flag that
+    assert result.ok and not any("box" in flag for flag in result.contradictions)
+    assert session._asked == [simple_case.instruction]

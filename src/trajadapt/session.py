@@ -154,6 +154,17 @@ class Turn:
 
 
 @dataclass(frozen=True)
+class Checkpoint:
+    """The conversation right after a plan: where to cut back to on undo, and the words said by then."""
+
+    messages: int
+    turns: int
+    plan: Plan
+    asked: tuple[str, ...]
+    left_out: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class Timings:
     """Seconds spent waiting for the LLM, executing code, and in all."""
 
@@ -319,7 +330,7 @@ class AdaptationSession:
         self._left_out: list[str] = []  # notes on steps left out of the current plan
         self._model_explanations: dict[str, Explanation] = {}
         self._started = time.perf_counter()
-        self._checkpoints: list[tuple[int, int, Plan]] = []  # (messages, turns, plan) right after each plan
+        self._checkpoints: list[Checkpoint] = []  # right after each plan
 
     @property
     def plan(self) -> Plan | None:
@@ -513,7 +524,7 @@ class AdaptationSession:
     @property
     def versions(self) -> list[Plan]:
         """Every plan of the conversation so far, oldest first (index = version)."""
-        return [plan for _, _, plan in self._checkpoints]
+        return [checkpoint.plan for checkpoint in self._checkpoints]
 
     def preview(self) -> Outcome:
         """Run the current plan's code once, without repair: the proposed trajectory, or what went wrong."""
@@ -529,8 +540,12 @@ class AdaptationSession:
             raise SessionStateError(
                 f"there is no plan version {version}; versions are 0..{len(self._checkpoints) - 1}"
             )
-        messages, turns, _ = self._checkpoints[version]
-        del self.messages[messages:], self.turns[turns:], self._checkpoints[version + 1 :]
+        kept = self._checkpoints[version]
+        del self.messages[kept.messages :], self.turns[kept.turns :], self._checkpoints[version + 1 :]
+        self._asked, self._left_out = (
+            list(kept.asked),
+            list(kept.left_out),
+        )  # the words said since are gone too
         self._log("undo", self._require_plan().code, {"user_text": f"back to version {version}"}, None, {})
         return self._require_plan()
 
@@ -560,7 +575,11 @@ class AdaptationSession:
                 kind, user_text = "format-retry", str(exc)
                 continue
             self._record(Turn(kind, user_text, plan, completion))
-            self._checkpoints.append((len(self.messages), len(self.turns), plan))
+            self._checkpoints.append(
+                Checkpoint(
+                    len(self.messages), len(self.turns), plan, tuple(self._asked), tuple(self._left_out)
+                )
+            )
             return plan
         raise AssertionError("unreachable")
 

@@ -19,10 +19,11 @@ import os
 import select
 import signal
 import sys
+import threading
 import time
 import traceback
 from collections.abc import Callable
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -42,6 +43,7 @@ from trajadapt.sandbox.protocol import (
 )
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
 from trajadapt.sandbox.rewrite import assign_discarded_results
+from trajadapt.sandbox.template import Template, TemplateGone, ended, send_job
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
 from trajadapt.trajectory import MAX_WAYPOINTS
 
@@ -55,37 +57,43 @@ def main() -> None:
     modules = preload_modules()
     protocol_out = os.fdopen(os.dup(1), "w", buffering=1)
     os.dup2(os.open(os.devnull, os.O_RDWR), 1)  # stray writes never corrupt the protocol
+    template = Template(lambda job, result_fd: _child(job, modules, result_fd))  # before any job is read
     protocol_out.write(json.dumps({"ready": True, "pid": os.getpid()}) + "\n")
     for line in sys.stdin:
         if not line.strip():
             continue
         job = json.loads(line)
-        result, duration_s, layers = run_job_in_child(job, modules)
+        try:
+            result, duration_s, layers = run_job_in_child(job, line.encode(), template)
+        except TemplateGone:
+            sys.exit(3)  # the host replaces the worker: a new template can only come from a fresh one
         protocol_out.write(worker_answer_json(result, duration_s, layers) + "\n")
 
 
-def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> tuple[ChildResult, float, list[str]]:
-    """Fork, run ``job`` in the child, and collect its result within the wall-clock limit.
+def run_job_in_child(
+    job: dict[str, Any], raw: bytes, template: Template
+) -> tuple[ChildResult, float, list[str]]:
+    """Have the template fork a child for ``job`` (sent as ``raw``); collect its result in time.
 
     Returns:
         The checked result, the seconds it took, and the layers the kernel shows for the child.
     """
+    job_read, job_write = os.pipe()
     read_fd, write_fd = os.pipe()
     started = time.perf_counter()
-    pid = os.fork()
-    if pid == 0:  # child: never returns
-        os.close(read_fd)
-        _child(job, modules, write_fd)
+    pid = template.fork_child(job_read, write_fd)
+    os.close(job_read)
     os.close(write_fd)
+    threading.Thread(target=send_job, args=(job_write, raw), daemon=True).start()
     deadline = started + float(job["wall_s"])
     payload, timed_out = _read_with_deadline(read_fd, deadline)  # None: too large
     if not timed_out:
-        timed_out = not _ends_by(pid, deadline)  # it closed the pipe and went on: the deadline holds
+        timed_out = not ended(pid, deadline - time.perf_counter())  # it closed the pipe and went on
     if timed_out:
         with contextlib.suppress(ProcessLookupError):
             os.kill(pid, signal.SIGKILL)
     layers = verified_layers(pid)  # before reaping: a zombie's status still shows its layers
-    _, status, usage = os.wait4(pid, 0)
+    status, cpu_s = template.reap(pid)
     if payload is None:
         result = error_result(
             "Crash", f"the code's process sent more than {MAX_CHILD_BYTES} bytes; discarded"
@@ -93,19 +101,8 @@ def run_job_in_child(job: dict[str, Any], modules: dict[str, Any]) -> tuple[Chil
     elif payload:
         result = _decode(payload)
     else:
-        result = _death_report(status, timed_out, usage.ru_utime + usage.ru_stime, job)
+        result = _death_report(status, timed_out, cpu_s, job)
     return result, time.perf_counter() - started, layers
-
-
-def _ends_by(pid: int, deadline: float) -> bool:
-    """Whether the child has ended (or ends) before the deadline; it is not reaped here."""
-    while True:
-        with contextlib.suppress(ChildProcessError):
-            if os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None:
-                return True
-        if time.perf_counter() >= deadline:
-            return False
-        time.sleep(0.005)
 
 
 def _read_with_deadline(fd: int, deadline: float) -> tuple[bytes | None, bool]:
@@ -156,7 +153,7 @@ def _death_report(status: int, timed_out: bool, cpu_s: float, job: dict[str, Any
     return error_result("Crash", "the code's process ended without a result")
 
 
-def _child(job: dict[str, Any], modules: dict[str, Any], write_fd: int) -> None:
+def _child(job: dict[str, Any], modules: dict[str, Any], write_fd: int) -> NoReturn:
     try:
         lock_down(ChildLimits(float(job["cpu_s"]), int(job["memory_mb"])), write_fd)
         result = execute(job, modules)

@@ -9,9 +9,11 @@ the layers a result reports are what the kernel enforced, not what the child cla
 
 from __future__ import annotations
 
+import ctypes
 import math
 import os
 import resource
+import signal
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -19,6 +21,9 @@ from trajadapt.sandbox import seccomp
 
 RESULT_FD = 3
 NOBODY_ID = 65534
+
+
+PR_SET_PDEATHSIG = 1
 
 
 @dataclass(frozen=True)
@@ -47,10 +52,19 @@ def lock_down(limits: ChildLimits, write_fd: int) -> None:
     os.dup2(write_fd, RESULT_FD)
     os.closerange(RESULT_FD + 1, 1 << 16)
     address_space = _current_address_space() + limits.memory_mb * 1024 * 1024
+    parent = os.getppid()
     _drop_privileges()
+    _die_with(parent)  # after the drop: changing user clears the parent-death signal
     _set_limits(limits, address_space)
     if not seccomp.install_filter() and seccomp.supported():
         raise LockdownFailed("the seccomp allow-list could not be installed; the code was not run")
+
+
+def _die_with(parent: int) -> None:
+    """SIGKILL this process when its parent ends, so no child outlives its worker (set before seccomp)."""
+    libc = ctypes.CDLL(None, use_errno=True)
+    if libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) != 0 or os.getppid() != parent:
+        os._exit(1)  # the parent is already gone
 
 
 def _drop_privileges() -> None:

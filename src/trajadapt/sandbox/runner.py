@@ -266,7 +266,10 @@ worker died with that request. This thread lives until the process ends, and so 
 
 
 def _start(command: list[str]) -> subprocess.Popen[str]:
-    return _STARTER.submit(_popen, command).result()
+    try:
+        return _STARTER.submit(_popen, command).result()
+    except RuntimeError as exc:  # the interpreter is shutting down: no new worker can be started
+        raise SandboxError(f"no sandbox worker can be started while the program ends ({exc})") from exc
 
 
 def _popen(command: list[str]) -> subprocess.Popen[str]:

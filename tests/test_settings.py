@@ -88,7 +88,7 @@ ENVIRONMENT = {
     "EXAMPLES": "5",
     "LEAVE_OUT_UNASKED": "no",
     "REPAIR_CONTRADICTIONS": "yes",
-    "CLAUSE_STEPS": "no",
+    "CLAUSE_STEPS": "yes",
     "CLAUSE_CHECK": "off",
     "ROBOT": "drone",
 }
@@ -104,7 +104,7 @@ SEEN = {
     "examples": 5,
     "leave_out_unasked": False,
     "repair_contradictions": True,
-    "clause_steps": False,
+    "clause_steps": True,
     "clause_check": False,
     "robot": "drone",
 }

@@ -83,7 +83,7 @@ class SessionSettings:
     examples: int = 3
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
-    clause_steps: bool = True
+    clause_steps: bool = False
     clause_check: bool = True
 
     @classmethod

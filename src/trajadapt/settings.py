@@ -76,7 +76,7 @@ class Settings:
     examples: int = 3
     leave_out_unasked: bool = True
     repair_contradictions: bool = False
-    clause_steps: bool = True
+    clause_steps: bool = False
     clause_check: bool = True
     robot: str = "none"
 

@@ -33,7 +33,7 @@ def case() -> Case:
 
 def test_the_first_answer_is_asked_under_the_clause_grammar_and_feedback_under_the_scenes(sandbox):
     backend = GrammarFollowing(answers=[answer(LEFT, SLOWER), answer(LEFT)])
-    session = AdaptationSession(case(), backend, sandbox, SessionSettings())
+    session = AdaptationSession(case(), backend, sandbox, SessionSettings(clause_steps=True))
     session.draft()
     session.feedback("forget the lamp")
     first, feedback = backend.requests
@@ -43,7 +43,7 @@ def test_the_first_answer_is_asked_under_the_clause_grammar_and_feedback_under_t
 
 def test_a_step_contradicting_its_words_is_asked_again_and_the_better_answer_kept(sandbox):
     backend = GrammarFollowing(answers=[answer(RIGHT, SLOWER), answer(LEFT, SLOWER)])
-    session = AdaptationSession(case(), backend, sandbox, SessionSettings())
+    session = AdaptationSession(case(), backend, sandbox, SessionSettings(clause_steps=True))
     plan = session.draft()
     assert LEFT in plan.code and len(backend.requests) == 2
     asked = backend.requests[1].messages[-1].content
@@ -55,7 +55,7 @@ def test_a_step_contradicting_its_words_is_asked_again_and_the_better_answer_kep
 
 def test_a_second_answer_no_better_leaves_no_trace_but_the_note(sandbox):
     backend = GrammarFollowing(answers=[answer(RIGHT, SLOWER), answer(RIGHT, SLOWER)])
-    session = AdaptationSession(case(), backend, sandbox, SessionSettings())
+    session = AdaptationSession(case(), backend, sandbox, SessionSettings(clause_steps=True))
     plan = session.draft()
     assert RIGHT in plan.code and len(session.turns) == 1 and len(session.messages) == 3
     assert session.versions == [plan]
@@ -64,17 +64,20 @@ def test_a_second_answer_no_better_leaves_no_trace_but_the_note(sandbox):
 
 def test_without_the_check_or_a_grammar_following_backend_one_answer_is_asked(sandbox):
     for backend, settings in [
-        (GrammarFollowing(answers=[answer(RIGHT, SLOWER)]), SessionSettings(clause_check=False)),
-        (ScriptedBackend(answers=[answer(RIGHT, SLOWER)]), SessionSettings()),
+        (
+            GrammarFollowing(answers=[answer(RIGHT, SLOWER)]),
+            SessionSettings(clause_steps=True, clause_check=False),
+        ),
+        (ScriptedBackend(answers=[answer(RIGHT, SLOWER)]), SessionSettings(clause_steps=True)),
     ]:
         AdaptationSession(case(), backend, sandbox, settings).draft()
         assert len(backend.requests) == 1
     assert "steps-c0" not in backend.requests[0].grammar  # the plain backend gets the scene's grammar
 
 
-def test_clause_steps_off_asks_under_the_scenes_grammar(sandbox):
+def test_clause_steps_are_off_by_default(sandbox):
     backend = GrammarFollowing(answers=[answer(LEFT, SLOWER)])
-    AdaptationSession(case(), backend, sandbox, SessionSettings(clause_steps=False)).draft()
+    AdaptationSession(case(), backend, sandbox, SessionSettings()).draft()
     assert "steps-c0" not in backend.requests[0].grammar
 
 
@@ -84,7 +87,7 @@ def test_code_that_is_not_a_skill_program_never_runs_where_the_grammar_held(sand
         answers=[json.dumps({"high_level_plan": "1) left", "python_code": numpy_code})]
     )
     session = AdaptationSession(
-        case(), backend, sandbox, SessionSettings(repair_attempts=0, clause_check=False)
+        case(), backend, sandbox, SessionSettings(clause_steps=True, repair_attempts=0, clause_check=False)
     )
     session.draft()
     result = session.approve()

@@ -48,7 +48,7 @@ from trajadapt.code_parse import (
 from trajadapt.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
 from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
-from trajadapt.wording import FASTER, SLOWER, SPEED_WORDS, longest_names, names_in
+from trajadapt.wording import FASTER, SLOWER, asks_pace, longest_names, names_in
 
 CLOSER = re.compile(
     r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
@@ -92,7 +92,7 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     side = _side(clause.replace(name, " "))
     if side:
         return ObjectAsk(name, "side", clause, side=side)
-    if SPEED_WORDS.search(clause) or FASTER.search(clause) or SLOWER.search(clause):
+    if asks_pace(clause):
         if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
             return None
         if CLOSER.search(clause) or AWAY.search(clause):  # "approach the lamp slowly": both, or a place?

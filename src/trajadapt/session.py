@@ -542,10 +542,8 @@ class AdaptationSession:
             )
         kept = self._checkpoints[version]
         del self.messages[kept.messages :], self.turns[kept.turns :], self._checkpoints[version + 1 :]
-        self._asked, self._left_out = (
-            list(kept.asked),
-            list(kept.left_out),
-        )  # the words said since are gone too
+        self._asked = list(kept.asked)  # the words said since are gone too
+        self._left_out = list(kept.left_out)
         self._log("undo", self._require_plan().code, {"user_text": f"back to version {version}"}, None, {})
         return self._require_plan()
 

@@ -17,12 +17,10 @@ SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
 CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I)
 """Where one clause of an instruction ends and the next begins."""
 
-SPEED_WORDS = re.compile(
-    r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure|accelerat|decelerat)", re.I
-)
+SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
 """Word stems that make a clause about speed."""
 
-PLACE_WORDS = re.compile(
+PATH_WORDS = re.compile(
     r"\b(?:distance|clear|avoid|away|reach|pass|through|between|around|circle|spiral|loop|extend|continu"
     r"|further|farther|closer|nearer|approach|shift|curv|bend|arc|zig|weav|smooth|height|altitude|above"
     r"|below|over|under|rotat|turn|tilt|scale|waypoint|side|towards?|hug|bow|offset)\w*",
@@ -44,8 +42,8 @@ def moving_directions(words: str) -> set[str]:
 
 def asked_kinds(words: str) -> frozenset[str]:
     """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
-    kinds = {"pace"} if SPEED_WORDS.search(words) else set()
-    if PLACE_WORDS.search(words) or moving_directions(words):
+    kinds = {"pace"} if asks_pace(words) else set()
+    if PATH_WORDS.search(words) or moving_directions(words):
         kinds.add("place")
     return frozenset(kinds)
 
@@ -80,3 +78,8 @@ def said_directions(words: str) -> set[str]:
 def longest_names(named: list[str]) -> list[str]:
     """The names not inside another of them ('red box' and 'box' found: 'red box')."""
     return [n for n in named if not any(n != o and n.casefold() in o.casefold() for o in named)]
+
+
+def asks_pace(words: str) -> bool:
+    """Whether the words ask about speed: a speed word, or one that asks for more or less of it."""
+    return bool(SPEED_WORDS.search(words) or FASTER.search(words) or SLOWER.search(words))

@@ -127,7 +127,7 @@ def clause_answer_grammar(clauses: tuple[str, ...], names: tuple[str, ...]) -> G
     a step, no step goes without a clause, and no clause's object or number reaches another's step.
     A clause that only keeps something (``split.only_keeps``) gets no line.
     """
-    asking = [index for index, clause in enumerate(clauses) if not only_keeps(clause, names)]
+    asking = _asking(clauses, names)
     rules: dict[str, Node] = {
         "root": seq('{"high_level_plan": "', Ref("plan"), '", "python_code": "', Ref("code"), '"}'),
         "plan": Some(PLAIN_TEXT_CHAR),
@@ -138,14 +138,26 @@ def clause_answer_grammar(clauses: tuple[str, ...], names: tuple[str, ...]) -> G
         ),
     }
     for index in asking:
-        clause, suffix = clauses[index], f"-c{index}"
-        own = _step_rules(clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause))
-        rules |= renamed(own, suffix)
+        suffix = f"-c{index}"
+        rules |= renamed(_step_rules(*_given_by(clauses, index, names)), suffix)
         line = seq("t = ", Ref(f"call{suffix}"), NEWLINE)
         rules[f"steps{suffix}"] = seq(line, Opt(line))
     grammar = Grammar(rules)
     grammar.check()
     return grammar
+
+
+def _asking(clauses: Sequence[str], names: Sequence[str]) -> list[int]:
+    """The indices of the clauses that ask for a step (not those that only keep something)."""
+    return [index for index, clause in enumerate(clauses) if not only_keeps(clause, names)]
+
+
+def _given_by(
+    clauses: Sequence[str], index: int, names: Sequence[str]
+) -> tuple[tuple[str, ...], tuple[str, ...], frozenset[str]]:
+    """What the words of clause ``index`` give its step: its objects, numbers and places."""
+    clause = clauses[index]
+    return clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause)
 
 
 def _step_rules(
@@ -203,14 +215,10 @@ def attribute_lines(
     A line belongs to a clause when it keeps to that clause's rules (``step_grammar``); clauses that
     only keep something get none. None when the lines cannot be divided so (another grammar wrote them).
     """
-    asking = [i for i, clause in enumerate(clauses) if not only_keeps(clause, names)]
+    asking = _asking(clauses, names)
 
     def fits(index: int, part: Sequence[str]) -> bool:
-        clause = clauses[index]
-        grammar = step_grammar(
-            clause_objects(clauses, index, names), allowed_numbers(clause), said_places(clause)
-        )
-        return grammar.matches("\n".join(part))
+        return step_grammar(*_given_by(clauses, index, names)).matches("\n".join(part))
 
     def divide(k: int, start: int) -> list[tuple[str, tuple[str, ...]]] | None:
         if k == len(asking):

@@ -54,13 +54,13 @@ def lock_down(limits: ChildLimits, write_fd: int) -> None:
     address_space = _current_address_space() + limits.memory_mb * 1024 * 1024
     parent = os.getppid()
     _drop_privileges()
-    _die_with(parent)  # after the drop: changing user clears the parent-death signal
+    die_with(parent)  # after the drop: changing user clears the parent-death signal
     _set_limits(limits, address_space)
     if not seccomp.install_filter() and seccomp.supported():
         raise LockdownFailed("the seccomp allow-list could not be installed; the code was not run")
 
 
-def _die_with(parent: int) -> None:
+def die_with(parent: int) -> None:
     """SIGKILL this process when its parent ends, so no child outlives its worker (set before seccomp)."""
     libc = ctypes.CDLL(None, use_errno=True)
     if libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0) != 0 or os.getppid() != parent:

@@ -12,17 +12,15 @@ ended, and it dies with the worker (and each child with it).
 
 from __future__ import annotations
 
-import ctypes
 import json
 import os
 import select
-import signal
 import socket
 import struct
 from collections.abc import Callable
 from typing import Any, NoReturn
 
-from trajadapt.sandbox.lockdown import PR_SET_PDEATHSIG
+from trajadapt.sandbox.lockdown import die_with
 
 MAX_JOB_BYTES = 256 * 1024 * 1024
 
@@ -84,7 +82,7 @@ def ended(pid: int, deadline_s: float) -> bool:
 
 def _serve(channel: socket.socket, run_child: Callable[[dict[str, Any], int], NoReturn]) -> NoReturn:
     """The template's loop: fork a child per request, reap it when asked. Never returns."""
-    _die_with_parent()
+    die_with(os.getppid())  # the template dies with the worker
     null = os.open(os.devnull, os.O_RDWR)
     os.dup2(null, 0)  # the worker's stdin carries jobs: the template never reads it
     os.closerange(3, channel.fileno())
@@ -156,9 +154,3 @@ def send_job(fd: int, job: bytes) -> None:
         pass
     finally:
         os.close(fd)
-
-
-def _die_with_parent() -> None:
-    """The template: SIGKILL when the worker ends."""
-    libc = ctypes.CDLL(None, use_errno=True)
-    libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)

@@ -13,9 +13,13 @@ times): the speed at a waypoint is the length of the step that leaves it over th
 speed 1.0 everywhere, and the loader says so. Positions are taken as they are, in the message's
 frame; ``--axes`` states how that frame's x reads (left or right).
 
-Writing puts the adapted and the original trajectory as two ``nav_msgs/Path`` messages whose pose
-stamps are the times to reach each waypoint at its speed, so they play next to a recording in
-Foxglove or RViz.
+Writing puts the adapted and the original trajectory on two topics, each as one message whose times
+are those to reach each waypoint at its speed, so they play next to a recording in Foxglove or RViz:
+
+- ``nav_msgs/Path`` (the default): the times are the poses' stamps;
+- ``trajectory_msgs/MultiDOFJointTrajectory``, for a controller that follows timed points: one
+  transform per point, ``time_from_start`` from the speeds and the velocity along the path (the
+  speed in the direction of the step that leaves the waypoint).
 """
 
 from __future__ import annotations
@@ -39,6 +43,7 @@ BAG_SUFFIXES = (".bag", ".mcap", ".db3")
 PATH_TYPE = "nav_msgs/msg/Path"
 POSE_TYPE = "geometry_msgs/msg/PoseStamped"
 MULTIDOF_TYPE = "trajectory_msgs/msg/MultiDOFJointTrajectory"
+MULTIDOF_JOINT = "base"  # the one joint of a MultiDOF export: the robot's base or tool frame
 NOMINAL_SPEED = 1.0
 DEFAULT_WAYPOINTS = 50
 
@@ -242,67 +247,124 @@ def write_paths(
     frame: str = "map",
     start_ns: int = 0,
     replace: bool = False,
+    msgtype: str = PATH_TYPE,
 ) -> None:
-    """Write each trajectory as one nav_msgs/Path on its topic to ``out`` (``mcap`` or ``bag``).
+    """Write each trajectory as one message on its topic to ``out`` (``mcap`` or ``bag``).
+
+    ``msgtype`` is ``PATH_TYPE`` or ``MULTIDOF_TYPE`` (see the module's docstring).
 
     Staged in the system's temporary folder, then published whole (``atomic_files.publish_bytes``):
     on any error, or a kill, nothing is left at ``out`` or beside it.
 
     Raises:
-        InputError: ``out`` exists (without ``replace``), its folder is missing, or an unknown format.
+        InputError: ``out`` exists (without ``replace``), its folder is missing, or an unknown format
+            or message type.
         DependencyNotInstalled: rosbags is not installed.
     """
     _rosbags()
     if fmt not in ("mcap", "bag"):
         raise InputError(f"unknown bag format {fmt!r}; use mcap or bag")
+    if msgtype not in WRITERS:
+        raise InputError(f"cannot write {msgtype!r}; use one of {', '.join(WRITERS)}")
     with tempfile.TemporaryDirectory(prefix="trajadapt-export-") as scratch:
         staged = Path(scratch) / "bag"
         if fmt == "mcap":
-            _write_ros2(staged, paths, frame, start_ns)
+            _write_ros2(staged, paths, frame, start_ns, msgtype)
             written = next(staged.glob("*.mcap"))
         else:
             written = staged.with_suffix(".bag")
-            _write_ros1(written, paths, frame, start_ns)
+            _write_ros1(written, paths, frame, start_ns, msgtype)
         publish_bytes(out, written.read_bytes(), replace)
+
+
+def _header(types: Any, frame: str, start_ns: int, seconds: float, ros1: bool) -> Any:
+    total = start_ns + round(seconds * 1e9)
+    stamp = types["builtin_interfaces/msg/Time"](sec=total // 10**9, nanosec=total % 10**9)
+    return types["std_msgs/msg/Header"](**({"seq": 0} if ros1 else {}), stamp=stamp, frame_id=frame)
 
 
 def _path_message(types: Any, rows: Array, frame: str, start_ns: int, ros1: bool) -> Any:
     times = times_from_speeds(rows)
-    header_fields = {"seq": 0} if ros1 else {}
-
-    def header(seconds: float) -> Any:
-        total = start_ns + round(seconds * 1e9)
-        stamp = types["builtin_interfaces/msg/Time"](sec=total // 10**9, nanosec=total % 10**9)
-        return types["std_msgs/msg/Header"](**header_fields, stamp=stamp, frame_id=frame)
 
     def pose(row: Array) -> Any:
         point = types["geometry_msgs/msg/Point"](x=float(row[0]), y=float(row[1]), z=float(row[2]))
         orientation = types["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0)
         return types["geometry_msgs/msg/Pose"](position=point, orientation=orientation)
 
-    poses = [types[POSE_TYPE](header=header(t), pose=pose(row)) for t, row in zip(times, rows, strict=True)]
-    return types[PATH_TYPE](header=header(0.0), poses=poses)
+    poses = [
+        types[POSE_TYPE](header=_header(types, frame, start_ns, t, ros1), pose=pose(row))
+        for t, row in zip(times, rows, strict=True)
+    ]
+    return types[PATH_TYPE](header=_header(types, frame, start_ns, 0.0, ros1), poses=poses)
 
 
-def _write_ros2(folder: Path, paths: dict[str, Trajectory], frame: str, start_ns: int) -> None:
+def _multidof_message(types: Any, rows: Array, frame: str, start_ns: int, ros1: bool) -> Any:
+    times = times_from_speeds(rows)
+    velocities = rows[:, 3:4] * path_directions(rows[:, :3])
+
+    def vector(xyz: Array) -> Any:
+        return types["geometry_msgs/msg/Vector3"](x=float(xyz[0]), y=float(xyz[1]), z=float(xyz[2]))
+
+    def point(row: Array, velocity: Array, seconds: float) -> Any:
+        rotation = types["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0)
+        transform = types["geometry_msgs/msg/Transform"](translation=vector(row[:3]), rotation=rotation)
+        twist = types["geometry_msgs/msg/Twist"](linear=vector(velocity), angular=vector(np.zeros(3)))
+        nanoseconds = round(seconds * 1e9)
+        duration = types["builtin_interfaces/msg/Duration"](
+            sec=nanoseconds // 10**9, nanosec=nanoseconds % 10**9
+        )
+        return types["trajectory_msgs/msg/MultiDOFJointTrajectoryPoint"](
+            transforms=[transform], velocities=[twist], accelerations=[], time_from_start=duration
+        )
+
+    points = [point(*item) for item in zip(rows, velocities, times, strict=True)]
+    header = _header(types, frame, start_ns, 0.0, ros1)
+    return types[MULTIDOF_TYPE](header=header, joint_names=[MULTIDOF_JOINT], points=points)
+
+
+def path_directions(positions: Array) -> Array:
+    """Unit direction of travel at each waypoint: the step that leaves it (the last: the step before).
+
+    A waypoint whose step does not move takes the direction of the nearest step that does; a path
+    that never moves has no direction (zeros).
+    """
+    steps = np.diff(positions, axis=0)
+    lengths = np.linalg.norm(steps, axis=1)
+    moving = np.flatnonzero(lengths > 0)
+    directions = np.zeros_like(positions)
+    if moving.size == 0:
+        return directions
+    leaving = np.arange(len(positions)).clip(max=len(steps) - 1)
+    nearest = moving[np.abs(leaving[:, None] - moving[None, :]).argmin(axis=1)]
+    unit: Array = steps[nearest] / lengths[nearest][:, None]
+    return unit
+
+
+WRITERS: dict[str, Callable[[Any, Array, str, int, bool], Any]] = {
+    PATH_TYPE: _path_message,
+    MULTIDOF_TYPE: _multidof_message,
+}
+
+
+def _write_ros2(folder: Path, paths: dict[str, Trajectory], frame: str, start_ns: int, msgtype: str) -> None:
     from rosbags.rosbag2 import StoragePlugin, Writer
     from rosbags.typesys import Stores, get_typestore
 
     store = get_typestore(Stores.ROS2_HUMBLE)
     with Writer(folder, version=9, storage_plugin=StoragePlugin.MCAP) as writer:
         for topic, trajectory in paths.items():
-            connection = writer.add_connection(topic, PATH_TYPE, typestore=store)
-            message = _path_message(store.types, trajectory.array, frame, start_ns, ros1=False)
-            writer.write(connection, start_ns, store.serialize_cdr(message, PATH_TYPE))
+            connection = writer.add_connection(topic, msgtype, typestore=store)
+            message = WRITERS[msgtype](store.types, trajectory.array, frame, start_ns, False)
+            writer.write(connection, start_ns, store.serialize_cdr(message, msgtype))
 
 
-def _write_ros1(file: Path, paths: dict[str, Trajectory], frame: str, start_ns: int) -> None:
+def _write_ros1(file: Path, paths: dict[str, Trajectory], frame: str, start_ns: int, msgtype: str) -> None:
     from rosbags.rosbag1 import Writer
     from rosbags.typesys import Stores, get_typestore
 
     store = get_typestore(Stores.ROS1_NOETIC)
     with Writer(file) as writer:
         for topic, trajectory in paths.items():
-            connection = writer.add_connection(topic, PATH_TYPE, typestore=store)
-            message = _path_message(store.types, trajectory.array, frame, start_ns, ros1=True)
-            writer.write(connection, start_ns, store.serialize_ros1(message, PATH_TYPE))
+            connection = writer.add_connection(topic, msgtype, typestore=store)
+            message = WRITERS[msgtype](store.types, trajectory.array, frame, start_ns, True)
+            writer.write(connection, start_ns, store.serialize_ros1(message, msgtype))

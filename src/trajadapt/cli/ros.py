@@ -11,10 +11,11 @@ import click
 
 from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import InputError
-from trajadapt.rosbag_io import times_from_speeds, write_paths
+from trajadapt.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, times_from_speeds, write_paths
 from trajadapt.trajectory import Trajectory, read_json_file
 
 FORMATS = ("mcap", "bag", "csv", "json")
+MESSAGES = {"path": PATH_TYPE, "multidof": MULTIDOF_TYPE}
 
 
 @click.command()
@@ -22,6 +23,10 @@ FORMATS = ("mcap", "bag", "csv", "json")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="mcap", show_default=True,
               help="mcap (ROS 2, plays in Foxglove), bag (ROS 1), csv or json (x, y, z, v and the time "
               "of each waypoint).")  # fmt: skip
+@click.option("--message", type=click.Choice(list(MESSAGES)), default="path", show_default=True,
+              help="In mcap and bag: path (nav_msgs/Path, poses stamped with their times) or multidof "
+              "(trajectory_msgs/MultiDOFJointTrajectory: time_from_start and the velocity along the "
+              "path at each point, for a controller).")  # fmt: skip
 @click.option("--topic", default="/adapted_plan", show_default=True, help="Topic of the adapted path.")
 @click.option(
     "--original-topic", default="/original_plan", show_default=True, help="Topic of the original path."
@@ -34,12 +39,20 @@ FORMATS = ("mcap", "bag", "csv", "json")
     "--force", is_flag=True, help="Replace the output file if it exists (never RESULT_FILE itself)."
 )
 def export(
-    result_file: Path, fmt: str, topic: str, original_topic: str, frame: str, out: Path | None, force: bool
+    result_file: Path,
+    fmt: str,
+    message: str,
+    topic: str,
+    original_topic: str,
+    frame: str,
+    out: Path | None,
+    force: bool,
 ) -> None:
-    """Write the adapted trajectory of RESULT_FILE (and the original) as nav_msgs/Path, CSV or JSON.
+    """Write the adapted trajectory of RESULT_FILE (and the original) as a ROS message, CSV or JSON.
 
-    Each pose's time stamp is when the robot reaches that waypoint leaving each one at its speed, so
-    the two paths play next to a recording. The output is created whole or not at all, and an
+    In mcap or bag, the message is nav_msgs/Path or trajectory_msgs/MultiDOFJointTrajectory (see
+    --message). Each waypoint's time is when the robot reaches it leaving each one at its speed, so the two
+    trajectories play next to a recording. The output is created whole or not at all, and an
     existing file is only replaced with --force.
     """
     adapted, original = _trajectories(result_file)
@@ -47,10 +60,13 @@ def export(
     _check_target(out, result_file)
     if not frame.isprintable() or not _encodes(frame):
         raise InputError(f"--frame {frame!r} is not a printable UTF-8 name")
+    if message != "path" and fmt not in ("mcap", "bag"):
+        raise InputError(f"--message {message} is written in mcap or bag; {fmt} has no message types")
     if fmt in ("mcap", "bag"):
         if topic == original_topic:
             raise InputError("--topic and --original-topic must differ")
-        write_paths(out, fmt, {topic: adapted, original_topic: original}, frame, replace=force)
+        paths = {topic: adapted, original_topic: original}
+        write_paths(out, fmt, paths, frame, replace=force, msgtype=MESSAGES[message])
     elif fmt == "csv":
         publish_bytes(out, _csv(adapted).encode("utf-8"), replace=force)
     else:
@@ -58,7 +74,8 @@ def export(
         record = {"trajectory": adapted.to_rows(), "time_s": [round(float(t), 9) for t in times],
                   "original_trajectory": original.to_rows(), "frame": frame}  # fmt: skip
         publish_bytes(out, (json.dumps(record, indent=2) + "\n").encode("utf-8"), replace=force)
-    click.echo(f"Wrote {out} ({fmt}: {len(adapted)} adapted and {len(original)} original waypoints)")
+    kind = f"{fmt}, {MESSAGES[message]}" if fmt in ("mcap", "bag") else fmt
+    click.echo(f"Wrote {out} ({kind}: {len(adapted)} adapted and {len(original)} original waypoints)")
 
 
 def _check_target(out: Path, result_file: Path) -> None:

@@ -36,7 +36,7 @@ import numpy.typing as npt
 from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import DependencyNotInstalled, InputError, TrajadaptError
 from trajadapt.recording_limits import check_declared_sizes
-from trajadapt.trajectory import Trajectory
+from trajadapt.trajectory import MAX_WAYPOINTS, Trajectory
 
 Array = npt.NDArray[np.float64]
 BAG_SUFFIXES = (".bag", ".mcap", ".db3")
@@ -108,6 +108,11 @@ def read_bag_trajectory(path: Path, topic: str | None, waypoints: int | None = N
 MAX_MESSAGES = 50_000
 """Messages read from one topic (a PoseStamped stream is resampled to ``DEFAULT_WAYPOINTS`` anyway)."""
 
+MAX_MESSAGE_BYTES = MAX_WAYPOINTS * 128
+"""Bytes of the one Path or MultiDOF message that is deserialized: ``MAX_WAYPOINTS`` points of 128
+bytes (a stamped pose takes about 72, a MultiDOF point about 124). Checked before deserializing,
+which takes some 600 bytes of Python objects for each serialized pose."""
+
 
 def _messages(reader: Any, connections: list[Any], msgtype: str) -> tuple[list[tuple[int, Any]], int]:
     """The topic's messages as (time, message), and how many there were.
@@ -125,6 +130,13 @@ def _messages(reader: Any, connections: list[Any], msgtype: str) -> tuple[list[t
             kept.append((stamp, connection, raw))
         else:
             kept[-1] = (stamp, connection, raw)
+    largest = max((len(raw) for _, _, raw in kept), default=0)
+    if largest > MAX_MESSAGE_BYTES:
+        raise InputError(
+            f"a {msgtype} message of {largest / 1e6:.1f} MB is more than the "
+            f"{MAX_MESSAGE_BYTES / 1e6:.1f} MB read (about {MAX_WAYPOINTS} waypoints); resample the "
+            "trajectory first"
+        )
     return [(stamp, reader.deserialize(raw, c.msgtype)) for stamp, c, raw in kept], count
 
 

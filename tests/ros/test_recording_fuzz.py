@@ -79,3 +79,26 @@ def test_a_good_recording_still_reads(tmp_path):
     recording(tmp_path, "mcap")
     read = read_bag_trajectory(path, "/plan")
     assert len(read.trajectory) == 30
+
+
+@pytest.mark.parametrize("fmt", ["mcap", "bag"])
+def test_a_message_too_large_to_hold_is_refused_before_it_is_deserialized(tmp_path, fmt, monkeypatch):
+    """A small compressed file can hold one huge plan: its size is checked on the raw bytes."""
+    import rosbags.highlevel
+
+    path = tmp_path / f"big.{fmt}"
+    s = np.linspace(0.0, 1.0, 2000)
+    write_paths(
+        path, fmt, {"/plan": Trajectory.from_rows(np.column_stack([s, s, s, s + 1]).tolist(), "rows")}
+    )
+    monkeypatch.setattr("trajadapt.rosbag_io.MAX_MESSAGE_BYTES", 20_000)
+    deserialized: list[str] = []
+    original = rosbags.highlevel.AnyReader.deserialize
+    monkeypatch.setattr(
+        rosbags.highlevel.AnyReader,
+        "deserialize",
+        lambda self, raw, msgtype: deserialized.append(msgtype) or original(self, raw, msgtype),
+    )
+    with pytest.raises(InputError, match=r"nav_msgs/msg/Path message of 0\.[12] MB is more than the 0\.0 MB"):
+        read_bag_trajectory(path, "/plan")
+    assert deserialized == []

@@ -47,6 +47,13 @@ def test_cases_folder(client: TestClient) -> None:
     assert outside.status_code in (400, 404)
 
 
+@pytest.mark.parametrize("name", ["room%00line.json", "x" * 5000, "room/%00", "%2e%2e/%00"])
+def test_a_case_name_no_file_can_have_is_answered_in_words(client: TestClient, name: str) -> None:
+    """A NUL byte or an over-long name is the client's mistake: a 400, and no exception in the server."""
+    response = client.get(f"/api/cases/{name}")  # the test client re-raises any exception the app lets out
+    assert response.status_code == 400 and "no case" in response.json()["error"]
+
+
 def test_bad_uploads_are_explained(client: TestClient) -> None:
     not_json = client.post("/api/upload?name=x.json", content=b"trajectory: [1, 2]")
     assert not_json.status_code == 400 and "not JSON" in not_json.json()["error"]

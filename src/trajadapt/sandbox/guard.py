@@ -1,8 +1,9 @@
 """Static check of generated code: the first of the sandbox's layers, run before anything executes.
 
 It refuses imports other than the allowed modules, any name or attribute that starts with an
-underscore (dunders, private members), frame and code attributes, file and module helpers of numpy,
-dynamic evaluation (eval, exec, getattr with built strings) and format strings that reach attributes.
+underscore (dunders, private members), any attribute outside the allow-list of ``allowed_names``
+(array maths; no file, memory, random-state, frame or module access), dynamic evaluation (eval,
+exec, getattr with built strings) and format strings that reach attributes.
 Every place the syntax names an attribute or binds a name is looked at: ``a.b``, ``match`` class
 patterns (``case C(__x__=v)``), capture names, keyword arguments, and format fields nested at any
 depth inside format specs (``'{0:{1.x}}'``).
@@ -19,9 +20,9 @@ import string
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-ALLOWED_MODULES = frozenset(
-    {"numpy", "numpy.linalg", "numpy.random", "numpy.fft", "numpy.polynomial", "math"}
-)
+from trajadapt.sandbox.allowed_names import ALLOWED_ATTRIBUTES, MODULE_MEMBERS
+
+ALLOWED_MODULES = frozenset(MODULE_MEMBERS)
 
 FORBIDDEN_NAMES = frozenset(
     {
@@ -29,21 +30,6 @@ FORBIDDEN_NAMES = frozenset(
         "vars", "getattr", "setattr", "delattr", "hasattr", "memoryview", "super", "object",
         "type", "classmethod", "staticmethod", "property", "exit", "quit", "copyright",
         "credits", "license", "dir", "id",
-    }
-)  # fmt: skip
-
-FORBIDDEN_ATTRIBUTES = frozenset(
-    {
-        # frames, code objects and generators' insides
-        "gi_frame", "gi_code", "gi_yieldfrom", "cr_frame", "cr_code", "ag_frame", "ag_code",
-        "f_globals", "f_locals", "f_builtins", "f_back", "f_code", "tb_frame", "tb_next",
-        "co_code", "func_globals", "mro",
-        # numpy file, memory and module access
-        "load", "loads", "save", "savez", "savez_compressed", "savetxt", "loadtxt", "genfromtxt",
-        "fromfile", "tofile", "dump", "dumps", "memmap", "open_memmap", "fromregex", "DataSource",
-        "ctypes", "ctypeslib", "lib", "f2py", "distutils", "testing", "show_config",
-        "show_runtime", "get_include", "mtrand", "core", "modules", "system", "popen",
-        "builtins", "os", "sys",
     }
 )  # fmt: skip
 
@@ -146,8 +132,11 @@ def _name_violation(name: str) -> str | None:
 def _attribute_violation(attribute: str) -> str | None:
     if attribute.startswith("_"):
         return f"attributes starting with '_' are not allowed: '.{attribute}'"
-    if attribute in FORBIDDEN_ATTRIBUTES:
-        return f"'.{attribute}' is not available in the sandbox (no file, frame or module access)"
+    if attribute not in ALLOWED_ATTRIBUTES:
+        return (
+            f"'.{attribute}' is not available in the sandbox: numpy and math are limited to array "
+            "maths, and no file, memory, frame or module access is allowed"
+        )
     return None
 
 

@@ -1,8 +1,8 @@
 """The restricted namespace generated code runs in: curated builtins, module proxies, bounded print.
 
 Second layer of the sandbox, after the static check in ``guard``. Imports resolve only to the allowed
-modules, and those are wrapped so that no attribute access hands back a module that was not allowed
-(numpy's submodules lead to ``sys.modules`` otherwise) or a file helper.
+modules, and those are wrapped so that an attribute access hands back only a member on the module's
+allow-list (``allowed_names``): no module that was not allowed, no file, memory or random-state helper.
 """
 
 from __future__ import annotations
@@ -17,7 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.sandbox.guard import ALLOWED_MODULES, FORBIDDEN_ATTRIBUTES
+from trajadapt.sandbox.allowed_names import MODULE_MEMBERS
+from trajadapt.sandbox.guard import ALLOWED_MODULES
 
 SAFE_BUILTIN_NAMES = (
     "abs", "all", "any", "bool", "callable", "complex", "dict", "divmod", "enumerate", "filter",
@@ -31,7 +32,7 @@ SAFE_BUILTIN_NAMES = (
 
 
 class SafeModule:
-    """A read-only view of an allowed module that never hands back another module or a file helper."""
+    """A read-only view of an allowed module that serves only the members on its allow-list."""
 
     def __init__(self, module: ModuleType, name: str) -> None:
         object.__setattr__(self, "_module", module)
@@ -39,7 +40,7 @@ class SafeModule:
 
     def __getattr__(self, attribute: str) -> Any:
         name = object.__getattribute__(self, "_name")
-        if attribute.startswith("_") or attribute in FORBIDDEN_ATTRIBUTES:
+        if attribute not in MODULE_MEMBERS[name]:
             raise AttributeError(f"{name}.{attribute} is not available in the sandbox")
         value = getattr(object.__getattribute__(self, "_module"), attribute)
         if isinstance(value, ModuleType):
@@ -50,7 +51,7 @@ class SafeModule:
         raise AttributeError("modules are read-only in the sandbox")
 
     def __dir__(self) -> list[str]:
-        return [name for name in dir(object.__getattribute__(self, "_module")) if name[0] != "_"]
+        return sorted(MODULE_MEMBERS[object.__getattribute__(self, "_name")])
 
     def __repr__(self) -> str:
         return f"<sandboxed module {object.__getattribute__(self, '_name')}>"

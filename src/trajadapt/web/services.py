@@ -62,13 +62,18 @@ class Services:
         """A case file of the cases folder (never outside it).
 
         Raises:
-            InputError: no cases folder, a path outside it, or a bad case file.
+            InputError: no cases folder, a name no file can have, a path outside the folder, or a
+                bad case file.
         """
         if self.cases_dir is None:
             raise InputError("the server was started without --cases; upload a case file instead")
         root = self.cases_dir.resolve()
-        path = (root / name).resolve()
-        if root not in path.parents or not path.is_file():
+        try:
+            path = (root / name).resolve()
+            found = root in path.parents and path.is_file()
+        except (ValueError, OSError):  # a NUL byte, a name too long for the file system
+            found = False
+        if not found:
             raise InputError(f"no case {name!r} in {self.cases_dir}")
         return load_case(path)
 

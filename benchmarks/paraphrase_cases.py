@@ -37,8 +37,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=formatter)
     parser.add_argument("cases", type=Path, help="the ovita-dev folder")
     parser.add_argument("out", type=Path, help="where the copies go (OUT/ovita-dev/...)")
+    parser.add_argument("--paraphrases", type=Path, default=PARAPHRASES, help="the set to use")
     args = parser.parse_args()
-    written = write_paraphrased_cases(args.cases, args.out)
+    written = write_paraphrased_cases(args.cases, args.out, args.paraphrases)
     print(f"wrote {len(written)} paraphrased case(s) under {args.out / 'ovita-dev'}")
 
 

@@ -16,6 +16,7 @@ from trajadapt.answer import Plan
 from trajadapt.backends.base import Backend
 from trajadapt.case import Case
 from trajadapt.errors import SessionStateError
+from trajadapt.memory import MemoryBank
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, Outcome, ProgressCallback, SessionSettings
 from trajadapt.store import Store
@@ -47,8 +48,10 @@ class AdaptationChain:
         settings: SessionSettings | None = None,
         store: Store | None = None,
         on_progress: ProgressCallback | None = None,
+        memory: MemoryBank | None = None,
     ) -> None:
         self.case = case
+        self.memory = memory
         self._parts = (backend, sandbox, settings, store, on_progress)
         self.steps: list[AdaptationSession] = [self._make(case)]
         self.results: list[AdaptationResult | None] = [None]
@@ -56,7 +59,7 @@ class AdaptationChain:
 
     def _make(self, case: Case) -> AdaptationSession:
         backend, sandbox, settings, store, on_progress = self._parts
-        return AdaptationSession(case, backend, sandbox, settings, store, on_progress)
+        return AdaptationSession(case, backend, sandbox, settings, store, on_progress, self.memory)
 
     @property
     def session(self) -> AdaptationSession:

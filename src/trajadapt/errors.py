@@ -4,6 +4,8 @@
 
     TrajadaptError
     ├── InputError                  a case, trajectory or scene file is missing or malformed
+    │   ├── LogUnusable             the log database cannot be opened, read or written
+    │   └── MemoryUnusable          the bank of remembered examples (or a file to import) is unusable
     ├── BackendError                the LLM could not be asked or did not answer usefully
     │   ├── BackendUnavailable      refused connection, DNS failure, HTTP 5xx, model not loaded
     │   ├── BackendTimeout          no answer in time
@@ -34,6 +36,10 @@ class InputError(TrajadaptError):
 
 class LogUnusable(InputError):
     """The log file (logs.db) cannot be opened, read or written: the message names it and what to do."""
+
+
+class MemoryUnusable(InputError):
+    """The bank of remembered examples cannot be read or written, or a file to import is not one."""
 
 
 class InvalidWaypoints(TrajadaptError, ValueError):

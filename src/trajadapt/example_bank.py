@@ -37,6 +37,8 @@ class Example:
     instruction: str
     high_level_plan: str
     code: str
+    remembered: str = ""
+    """The id of the user's remembered example this is ('' for the shipped bank's)."""
 
     def render(self) -> str:
         """As the prompt shows examples: the instruction, then the answer's JSON on one line."""

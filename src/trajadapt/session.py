@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
@@ -30,8 +30,10 @@ from trajadapt.errors import (
     InvalidTrajectory,
     SessionStateError,
 )
+from trajadapt.example_bank import Example
 from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
 from trajadapt.height_asks import relate_heights
+from trajadapt.memory import MemoryBank, RememberedExample, choose_examples
 from trajadapt.object_asks import replace_object_steps
 from trajadapt.part_scope import scope_to_parts
 from trajadapt.projection import project
@@ -225,6 +227,10 @@ class AdaptationResult:
     effect: Effect | None = None
     contradictions: tuple[str, ...] = ()
     explanation: Explanation | None = None
+    recalled: tuple[str, ...] = ()
+    """Ids of the user's remembered examples that were in the prompt."""
+    remembered_as: str = ""
+    """The id this approved answer is remembered under ('' when memory is off or it failed)."""
 
     @property
     def ok(self) -> bool:
@@ -268,6 +274,7 @@ class AdaptationResult:
                 if self.effect
                 else None
             ),
+            "memory": {"recalled": list(self.recalled), "remembered_as": self.remembered_as or None},
         }
 
 
@@ -291,6 +298,25 @@ def skill_hints(code: str, problem: str) -> str:
     return "\nHow to call it:\n" + "\n".join(f"- {signature_line(f)}: {summary(f)}" for f in used)
 
 
+def _recalled(
+    case: Case, settings: SessionSettings, remembered: Sequence[RememberedExample]
+) -> tuple[Example, ...]:
+    """The remembered examples the first prompt shows (the same choice ``first_messages`` made)."""
+    if not remembered or settings.mode != "skills":
+        return ()
+    chosen = choose_examples(case.instruction, settings.examples, case.scene.names(), remembered)
+    return tuple(example for example in chosen if example.remembered)
+
+
+def _same_program(first: str, second: str) -> bool:
+    """Equal programs up to blank lines and spaces at line ends."""
+
+    def lines(code: str) -> list[str]:
+        return [line.rstrip() for line in code.strip().splitlines() if line.strip()]
+
+    return lines(first) == lines(second)
+
+
 class AdaptationSession:
     """The conversation about one case: plans, feedback, repairs and the final result."""
 
@@ -302,8 +328,16 @@ class AdaptationSession:
         settings: SessionSettings | None = None,
         store: Store | None = None,
         on_progress: ProgressCallback | None = None,
+        memory: MemoryBank | None = None,
     ) -> None:
+        """A session on ``case``; ``memory`` recalls the user's approved answers and keeps new ones.
+
+        Raises:
+            MemoryUnusable: the bank of remembered examples cannot be read.
+        """
         self.case = case
+        self.memory = memory
+        remembered = memory.examples() if memory is not None else []
         self.backend = backend
         self.sandbox = sandbox
         self.settings = settings or SessionSettings()
@@ -317,8 +351,12 @@ class AdaptationSession:
                 self.settings.mode,
                 self.settings.waypoints_in_prompt,
                 self.settings.examples,
+                remembered,
             )
         )
+        self._recalled = _recalled(case, self.settings, remembered)
+        self.recalled = tuple(example.remembered for example in self._recalled)
+        self._remembered_as = ""
         self.session_id: str | None = None
         self._llm_s = 0.0
         self._exec_s = 0.0
@@ -429,7 +467,26 @@ class AdaptationSession:
         return self._ask("feedback", text.strip())
 
     def approve(self) -> AdaptationResult:
-        """Run the current code; on failure send the error back for up to ``repair_attempts`` fixes."""
+        """Run the current code; on failure send the error back for up to ``repair_attempts`` fixes.
+
+        A result that runs is remembered in the session's memory (when it has one): the instruction
+        and the program, for the next request in the user's words; approving again after a
+        correction replaces what this session remembered with the corrected program.
+        """
+        result = self._run_approved()
+        memory = self.memory
+        if not (result.ok and result.plan is not None and memory is not None and not memory.read_only):
+            return result
+        if self._remembered_as:  # approved again after a correction: the corrected answer replaces it
+            memory.forget(self._remembered_as)
+        kept = memory.remember(
+            self.case.instruction, result.plan.numbered(), result.plan.code, self.case.scene.names()
+        )
+        self._remembered_as = kept.id
+        self.on_progress(f"remembered as example {kept.id} (trajadapt examples show {kept.id})")
+        return replace(result, remembered_as=kept.id)
+
+    def _run_approved(self) -> AdaptationResult:
         plan = self._require_plan()
         attempts = 0
         while True:
@@ -586,6 +643,10 @@ class AdaptationSession:
         self._left_out = []
         if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
             return plan
+        approved = next((e for e in self._recalled if _same_program(e.code, plan.code)), None)
+        if approved is not None:  # the user's own approved program for a request like this one
+            self._left_out = [f"the program of remembered example {approved.remembered}, kept as approved"]
+            return plan
         names = [obj.name for obj in self.case.scene.objects]
         code, left_out = leave_out_unasked(plan.code, self._asked, names)
         code, replaced = replace_unstated_amounts(code, self._asked)
@@ -734,6 +795,7 @@ class AdaptationSession:
             tokens=dict(self._tokens),
             settings=self.settings.describe(),
             explanation=self._explanation_of(plan),
+            recalled=self.recalled,
             **self._effect(trajectory),
         )
 

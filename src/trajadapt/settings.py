@@ -37,6 +37,8 @@ class Settings:
         seed: sampling seed, for reproducible answers at a temperature above 0.
         repair_attempts: how often a failing code is sent back to the LLM before giving up.
         log: whether exchanges are logged to SQLite.
+        memory: whether approved answers are remembered as examples (``memory_path``) and recalled
+            for later requests.
         isolation: the sandbox's outer layer: ``auto``, ``bwrap`` or ``process``.
         waypoints_in_prompt: send every waypoint, not only the trajectory's summary (longer prompts).
         project: project a result that breaks the stated constraints onto them (a review note says how
@@ -69,6 +71,7 @@ class Settings:
     seed: int = 0
     repair_attempts: int = 2
     log: bool = True
+    memory: bool = True
     isolation: str = "auto"
     waypoints_in_prompt: bool = False
     project: bool = True
@@ -86,6 +89,11 @@ class Settings:
         return self.home / "logs.db"
 
     @property
+    def memory_path(self) -> Path:
+        """The user's bank of remembered examples."""
+        return self.home / "memory.jsonl"
+
+    @property
     def config_path(self) -> Path:
         """The optional TOML configuration file."""
         return self.home / "config.toml"
@@ -99,6 +107,7 @@ ENV_FIELDS = {
     "seed": int,
     "repair_attempts": int,
     "log": bool,
+    "memory": bool,
     "isolation": str,
     "waypoints_in_prompt": bool,
     "project": bool,

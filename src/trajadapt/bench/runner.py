@@ -28,6 +28,7 @@ from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, latt
 from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
 from trajadapt.geometry import AXIS_CONVENTIONS, Axes
+from trajadapt.memory import MemoryBank
 from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, Failure, SessionSettings
 from trajadapt.trajectory import Trajectory, read_json_file
@@ -60,6 +61,8 @@ class BenchConfig:
     jobs: int = 1
     force: bool = False
     isolation: Isolation = "auto"
+    memory: Path | None = None
+    """A bank of remembered examples to recall from (read only); None: the shipped bank alone."""
 
 
 def discover_cases(paths: list[Path], expectations_file: Path | None = None) -> list[BenchCase]:
@@ -210,7 +213,8 @@ def _run_and_save(
 def run_case(case: BenchCase, backend: Backend, sandbox: Sandbox, config: BenchConfig) -> dict[str, Any]:
     """Adapt one case (first plan approved) and score it; failures become an error record."""
     loaded = load_case(case.path)
-    session = AdaptationSession(loaded, backend, sandbox, config.session)
+    memory = MemoryBank(config.memory, read_only=True) if config.memory else None
+    session = AdaptationSession(loaded, backend, sandbox, config.session, memory=memory)
     try:
         session.draft()
         record = session.approve().to_dict()

@@ -25,6 +25,7 @@ from trajadapt.cli.robots import ROBOT_NAMES, run_and_report
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError
 from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.memory import MemoryBank
 from trajadapt.plot import plot_comparison
 from trajadapt.prompts import PROMPT_MODES
 from trajadapt.rosbag_io import is_bag, read_bag_trajectory
@@ -121,6 +122,9 @@ from trajadapt.trajectory import Trajectory
 )
 @limits_options
 @click.option("--no-log", is_flag=True, help="Do not log the exchanges to the SQLite log.")
+@click.option("--no-memory", is_flag=True,
+              help="Neither recall earlier approved answers as examples nor remember this one "
+              "(TRAJADAPT_MEMORY=false does the same; see 'trajadapt examples').")  # fmt: skip
 @click.option(
     "--simulate",
     "simulate_on",
@@ -152,6 +156,7 @@ def adapt(
     robot: str | None,
     limits: Constraints,
     no_log: bool,
+    no_memory: bool,
     simulate_on: str | None,
 ) -> None:
     """Adapt the trajectory of CASE_FILE (OVITA case format) to its instruction.
@@ -161,7 +166,8 @@ def adapt(
     overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
                  "project": project_onto, "examples": examples, "grammar": grammar,
                  "robot": robot}  # fmt: skip
-    settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature})
+    settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature,
+                              "memory": False if no_memory else None})  # fmt: skip
     case = _load_case(case_file, trajectory_file, scene_file, instruction, (topic, waypoints))
     chosen = make_backend(settings, options, model_path)
     out = out or Path(f"{case.name}.result.json")
@@ -225,7 +231,8 @@ def _run_session(
     session_settings = SessionSettings.from_settings(settings, limits)
     try:
         with Sandbox(isolation=isolation_of(settings)) as sandbox, Progress() as progress:
-            chain = AdaptationChain(case, backend, sandbox, session_settings, store, progress.update)
+            memory = MemoryBank(settings.memory_path) if settings.memory else None
+            chain = AdaptationChain(case, backend, sandbox, session_settings, store, progress.update, memory)
             click.echo(f"Case {case.name}: {case.instruction}")
             show_plan(chain.draft())
             while True:

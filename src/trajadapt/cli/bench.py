@@ -20,7 +20,9 @@ from trajadapt.cli.common import (
     option_option,
 )
 from trajadapt.cli.console import CaseProgress
+from trajadapt.errors import InputError
 from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.memory import MemoryBank
 from trajadapt.prompts import PROMPT_MODES
 from trajadapt.session import SessionSettings
 from trajadapt.settings import load_settings
@@ -77,6 +79,10 @@ from trajadapt.settings import load_settings
     default=None,
     help="Project results that break a case's constraints onto them (default), or fail them.",
 )
+@click.option("--memory", "memory_file", type=click.Path(path_type=Path, dir_okay=False), default=None,
+              help="Recall examples from this bank of remembered answers too (read only; 'trajadapt "
+              "examples export' writes one). Without it a run never reads or writes the user's "
+              "bank.")  # fmt: skip
 def bench(
     cases: tuple[Path, ...],
     backend: str | None,
@@ -93,6 +99,7 @@ def bench(
     repairs: int | None,
     waypoints_in_prompt: bool | None,
     project_onto: bool | None,
+    memory_file: Path | None,
 ) -> None:
     """Run every case in CASES (files or folders) and score the results against expectations.
 
@@ -118,7 +125,13 @@ def bench(
         jobs=jobs,
         force=force,
         isolation=isolation_of(settings),
+        memory=memory_file,
     )
+    if memory_file is not None:
+        if not memory_file.is_file():
+            raise InputError(f"--memory {memory_file}: no such file")
+        recalled = MemoryBank(memory_file, read_only=True).examples()
+        click.echo(f"recalling from {len(recalled)} remembered example(s) in {memory_file}")
     if rescore:
         click.echo(f"judged {rescore_results(found, config)} stored result(s) again")
         stored = [result_path(config, case) for case in found]

@@ -7,6 +7,7 @@ reuse its cached state; what changes (environment, trajectory, instruction) foll
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from importlib import resources
 from string import Template
 
@@ -14,8 +15,8 @@ import numpy as np
 
 from trajadapt.backends.base import ChatMessage
 from trajadapt.case import Case
-from trajadapt.example_bank import default_bank
 from trajadapt.geometry import AxisConvention
+from trajadapt.memory import RememberedExample, choose_examples
 from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
 from trajadapt.skills import describe_skills
 from trajadapt.trajectory import Trajectory
@@ -95,24 +96,28 @@ def list_waypoints(trajectory: Trajectory) -> str:
     return "\n".join("[" + ", ".join(f"{value:.3g}" for value in row) + "]" for row in trajectory.array)
 
 
-def render_examples(case: Case, count: int) -> str:
-    """The ``count`` bank examples nearest to the case's instruction, nearest last, as a prompt section."""
-    names = [obj.name for obj in case.scene.objects]
-    chosen = default_bank().nearest(case.instruction, count, names)
+def render_examples(case: Case, count: int, remembered: Sequence[RememberedExample] = ()) -> str:
+    """The ``count`` examples nearest to the case's instruction, nearest last, as a prompt section.
+
+    They come from the shipped bank and the user's ``remembered`` answers (``memory.choose_examples``).
+    """
+    chosen = choose_examples(case.instruction, count, case.scene.names(), remembered)
     if not chosen:
         return ""
     body = "\n\n".join(example.render() for example in reversed(chosen))
     return f"EXAMPLES CLOSE TO THIS INSTRUCTION (their objects are not in this scene):\n{body}\n\n"
 
 
-def task_prompt(case: Case, waypoints: bool = False, examples: int = 0) -> str:
+def task_prompt(
+    case: Case, waypoints: bool = False, examples: int = 0, remembered: Sequence[RememberedExample] = ()
+) -> str:
     """The per-request part: chosen examples, environment, trajectory summary, instruction."""
     trajectory = summarize_trajectory(case.trajectory)
     if waypoints:
         trajectory += "\n- waypoints [x, y, z, velocity]:\n" + list_waypoints(case.trajectory)
     return render(
         "task",
-        examples=render_examples(case, examples),
+        examples=render_examples(case, examples, remembered),
         environment=describe_environment(case),
         trajectory=trajectory,
         instruction=case.instruction,
@@ -120,14 +125,21 @@ def task_prompt(case: Case, waypoints: bool = False, examples: int = 0) -> str:
 
 
 def first_messages(
-    case: Case, axes: AxisConvention, mode: str = "skills", waypoints: bool = False, examples: int = 0
+    case: Case,
+    axes: AxisConvention,
+    mode: str = "skills",
+    waypoints: bool = False,
+    examples: int = 0,
+    remembered: Sequence[RememberedExample] = (),
 ) -> tuple[ChatMessage, ...]:
     """The opening conversation for ``case``.
 
-    ``waypoints`` adds every waypoint to the summary; ``examples`` puts that many bank examples
-    nearest to the instruction before the environment (skills mode only: the paper's prompt is fixed).
+    ``waypoints`` adds every waypoint to the summary; ``examples`` puts that many examples nearest to
+    the instruction (from the shipped bank and the user's ``remembered`` answers) before the
+    environment (skills mode only: the paper's prompt is fixed).
     """
+    count = examples if mode == "skills" else 0
     return (
         ChatMessage("system", system_prompt(axes, mode)),
-        ChatMessage("user", task_prompt(case, waypoints, examples if mode == "skills" else 0)),
+        ChatMessage("user", task_prompt(case, waypoints, count, remembered)),
     )

@@ -354,8 +354,8 @@ class AdaptationSession:
                 remembered,
             )
         )
-        self._recalled = _recalled(case, self.settings, remembered)
-        self.recalled = tuple(example.remembered for example in self._recalled)
+        self.recalled_examples = _recalled(case, self.settings, remembered)
+        self.recalled = tuple(example.remembered for example in self.recalled_examples)
         self._remembered_as = ""
         self.session_id: str | None = None
         self._llm_s = 0.0
@@ -643,7 +643,7 @@ class AdaptationSession:
         self._left_out = []
         if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
             return plan
-        approved = next((e for e in self._recalled if _same_program(e.code, plan.code)), None)
+        approved = next((e for e in self.recalled_examples if _same_program(e.code, plan.code)), None)
         if approved is not None:  # the user's own approved program for a request like this one
             self._left_out = [f"the program of remembered example {approved.remembered}, kept as approved"]
             return plan

@@ -13,6 +13,7 @@ from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from trajadapt.backends.registry import get_backend
+from trajadapt.memory import MemoryBank
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
 from trajadapt.store import Store
@@ -31,7 +32,11 @@ CASE = {
 
 
 def build_app(
-    tmp_path: Path, answers: list[dict[str, Any]], cases_dir: Path | None = None, token: str | None = None
+    tmp_path: Path,
+    answers: list[dict[str, Any]],
+    cases_dir: Path | None = None,
+    token: str | None = None,
+    memory: MemoryBank | None = None,
 ) -> FastAPI:
     """An app whose backend replies with ``answers`` in turn; its log in ``tmp_path``."""
     answer_file = tmp_path / "answers.json"
@@ -44,6 +49,7 @@ def build_app(
         work_dir=tmp_path / "web",
         cases_dir=cases_dir,
         simulator=pybullet_simulator("left"),
+        memory=memory,
     )
     return create_app(services, token, allowed_hosts=("testserver",))
 

@@ -10,6 +10,7 @@ import click
 from trajadapt.cli.adapt import adapt
 from trajadapt.cli.backends import backends
 from trajadapt.cli.bench import bench
+from trajadapt.cli.examples import examples
 from trajadapt.cli.logs import logs
 from trajadapt.cli.robots import plan, simulate
 from trajadapt.cli.ros import export
@@ -43,5 +44,5 @@ def cli(debug: bool) -> None:
     logging.basicConfig(level=logging.DEBUG if debug else logging.WARNING)
 
 
-for command in (adapt, bench, backends, logs, simulate, plan, serve, export):
+for command in (adapt, bench, backends, logs, examples, simulate, plan, serve, export):
     cli.add_command(command)

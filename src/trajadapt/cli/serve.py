@@ -14,6 +14,7 @@ from trajadapt.cli.common import backend_option, isolation_of, limits_options, m
 from trajadapt.constraints import Constraints
 from trajadapt.errors import DependencyNotInstalled, InputError
 from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.memory import MemoryBank
 from trajadapt.prompts import PROMPT_MODES
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
@@ -43,12 +44,14 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
 @click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
 @click.option("--no-log", is_flag=True, help="Do not log sessions (and list no earlier ones).")
+@click.option("--no-memory", is_flag=True,
+              help="Neither recall approved answers as examples nor remember new ones.")  # fmt: skip
 @limits_options
 def serve(
     host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None,
     allowed_hosts: tuple[str, ...], backend: str | None, options: tuple[tuple[str, str], ...],
-    model_path: Path | None, mode: str | None, axes: str | None, no_log: bool, robot: str | None,
-    limits: Constraints,
+    model_path: Path | None, mode: str | None, axes: str | None, no_log: bool, no_memory: bool,
+    robot: str | None, limits: Constraints,
 ) -> None:  # fmt: skip
     """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
 
@@ -66,6 +69,7 @@ def serve(
         "axes": axes,
         "robot": robot,
         "log": False if no_log else None,
+        "memory": False if no_memory else None,
     }
     settings = load_settings(overrides)
     app = _build_app(settings, cases_dir, options, model_path, limits, token, (host, *allowed_hosts))
@@ -124,5 +128,6 @@ def _build_app(
         work_dir=settings.home / "web",
         cases_dir=cases_dir,
         simulator=pybullet_simulator(convention.positive_x),
+        memory=MemoryBank(settings.memory_path) if settings.memory else None,
     )
     return create_app(services, token, allowed_hosts)

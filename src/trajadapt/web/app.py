@@ -18,7 +18,7 @@ from typing import Any, Literal
 from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
-from pydantic import BaseModel
+from pydantic import BaseModel, Field
 
 from trajadapt.case import Case, case_from_dict
 from trajadapt.constraints import Constraints
@@ -81,6 +81,12 @@ class UndoBody(BaseModel):
     """The version to go back to."""
 
     version: int
+
+
+class ForgetBody(BaseModel):
+    """The remembered example to forget."""
+
+    example: str = Field(min_length=1, max_length=64)
 
 
 class SimulateBody(BaseModel):
@@ -258,6 +264,14 @@ def _session_routes(app: FastAPI, state: ServerState) -> None:
             live.result = result
 
         state.jobs.start(live, "running the approved code", work, lambda: setattr(live, "result", None))
+        return live.to_dict()
+
+    @app.post("/api/sessions/{session_id}/forget")
+    def forget(session_id: str, body: ForgetBody) -> dict[str, Any]:
+        live = _find(state, session_id)
+        if not state.services.forget(body.example):
+            raise InputError(f"no remembered example {body.example!r} (or memory is off on this server)")
+        live.forgotten.add(body.example)
         return live.to_dict()
 
     @app.post("/api/sessions/{session_id}/cancel")

@@ -67,6 +67,7 @@ class LiveSession:
     job: int = 0
     lock: threading.Lock = field(default_factory=threading.Lock)  # held by the job touching ``session``
     used: float = field(default_factory=time.monotonic)  # when the page last asked about it
+    forgotten: set[str] = field(default_factory=set)  # remembered examples forgotten from this page
 
     def to_dict(self) -> dict[str, Any]:
         """The state the page draws."""
@@ -76,8 +77,16 @@ class LiveSession:
             "error": self.error, "case": _case_view(self.case), "current": self.current,
             "versions": [v.to_dict() for v in self.versions],
             "result": self.session.to_dict(self.result) if self.result else None,
-            "simulation": self.simulation,
+            "simulation": self.simulation, "memory": self.memory_view(),
         }  # fmt: skip
+
+    def memory_view(self) -> dict[str, Any]:
+        """The remembered examples the first prompt showed, and what this result is remembered as."""
+        shown = self.session.steps[0].recalled_examples
+        kept = self.result.remembered_as if self.result else ""
+        recalled = [{"id": e.remembered, "instruction": e.instruction} for e in shown
+                    if e.remembered not in self.forgotten]  # fmt: skip
+        return {"recalled": recalled, "remembered_as": "" if kept in self.forgotten else kept}
 
     def say(self, activity: str) -> None:
         """Progress from the session ("asking local", "running the code")."""

@@ -15,6 +15,7 @@ from trajadapt.case import Case, load_case
 from trajadapt.chain import AdaptationChain
 from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError
+from trajadapt.memory import MemoryBank
 from trajadapt.robot_limits import robot_constraints
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, SessionSettings
@@ -32,6 +33,7 @@ class Services:
     work_dir: Path
     cases_dir: Path | None = None
     simulator: Callable[[AdaptationResult, str, Path], dict[str, Any]] | None = None
+    memory: MemoryBank | None = None  # None: approved answers are neither recalled nor remembered
 
     def new_session(
         self, case: Case, limits: Constraints | None = None, robot: str | None = None
@@ -50,7 +52,11 @@ class Services:
         if limits is not None:
             own = settings.constraints or Constraints()
             settings = replace(settings, constraints=own.merged_with(limits))
-        return AdaptationChain(case, self.backend, self.sandbox, settings, self.store)
+        return AdaptationChain(case, self.backend, self.sandbox, settings, self.store, memory=self.memory)
+
+    def forget(self, example_id: str) -> bool:
+        """Forget a remembered example; False when memory is off or there is no such example."""
+        return self.memory is not None and self.memory.forget(example_id)
 
     def case_names(self) -> list[str]:
         """Case files under the cases folder, as paths relative to it."""

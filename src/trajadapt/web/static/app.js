@@ -129,6 +129,7 @@ function render(session) {
   $("feedback-on").options[1].disabled = !session.result;
   if (!session.result) $("feedback-on").value = "original";
   if (version) renderVersion(version, session);
+  renderMemory(session);
   renderHistory(session);
   renderResult(session);
   const proposed = session.result && session.result.modified_trajectory ? session.result.modified_trajectory
@@ -173,6 +174,31 @@ function renderHistory(session) {
     }
     return item;
   }));
+}
+
+function forgetButton(session, exampleId) {
+  const button = document.createElement("button");
+  button.textContent = "Forget this one";
+  button.addEventListener("click", () => guarded(async () => {
+    follow(await post("/api/sessions/" + session.id + "/forget", { example: exampleId }));
+  }));
+  return button;
+}
+
+function renderMemory(session) {
+  const memory = session.memory || { recalled: [], remembered_as: "" };
+  $("recalled-box").hidden = memory.recalled.length === 0;
+  $("recalled").replaceChildren(...memory.recalled.map((example) => {
+    const item = document.createElement("li");
+    item.textContent = example.instruction + " ";
+    if (session.live) item.appendChild(forgetButton(session, example.id));
+    return item;
+  }));
+  $("remembered-box").hidden = !memory.remembered_as;
+  const old = $("forget-result");
+  const fresh = forgetButton(session, memory.remembered_as);
+  fresh.id = "forget-result";
+  old.replaceWith(fresh);
 }
 
 function renderResult(session) {

@@ -14,11 +14,11 @@ import argparse
 import statistics
 from pathlib import Path
 
-from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import ChatRequest
 from trajadapt.backends.local import LocalBackend, LocalOptions
-from trajadapt.case import Case, load_case
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.llm.answer_grammar import answer_grammar
+from trajadapt.model.case import Case, load_case
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import first_messages
 
 

@@ -36,7 +36,7 @@ DEFAULT_CASE = Path(__file__).resolve().parents[1].parent / "shared/data/ovita-d
 def one_answer(case_path: Path, instruction: str, cache_dir: Path, prompt_cache: bool) -> dict[str, float]:
     """Adapt once in this process; return timings and token counts."""
     from trajadapt.backends.local import LocalBackend, LocalOptions
-    from trajadapt.case import load_case
+    from trajadapt.model.case import load_case
     from trajadapt.sandbox.runner import Sandbox
     from trajadapt.session import AdaptationSession, SessionSettings
 
@@ -138,7 +138,7 @@ def main() -> None:
     )
     if not args.case.is_file():
         parser.error(f"case {args.case} not found; give one with --case FILE (default: ovita-dev's latte_10)")
-    from trajadapt.model_file import ensure_model
+    from trajadapt.llm.model_file import ensure_model
     from trajadapt.settings import default_home
 
     models = default_home() / "models"

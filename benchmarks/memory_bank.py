@@ -15,8 +15,8 @@ import json
 from pathlib import Path
 
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path
-from trajadapt.case import load_case
 from trajadapt.memory import MemoryBank
+from trajadapt.model.case import load_case
 
 CORRECTIONS = Path(__file__).resolve().parent / "data" / "memory_corrections.json"
 

@@ -20,14 +20,14 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, POSE_TYPE, _path_message, write_paths
-from trajadapt.trajectory import Trajectory
+from trajadapt.files.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, POSE_TYPE, _path_message, write_paths
+from trajadapt.model.trajectory import Trajectory
 
 READ = """
 import json, sys, time
 from trajadapt.errors import InputError
 from pathlib import Path
-from trajadapt.rosbag_io import read_bag_trajectory
+from trajadapt.files.rosbag_io import read_bag_trajectory
 start = time.perf_counter()
 count = 0
 if sys.argv[1] != "-":

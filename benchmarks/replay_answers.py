@@ -17,8 +17,8 @@ from pathlib import Path
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
-from trajadapt.case import load_case
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.model.case import load_case
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import describe_environment
 from trajadapt.session import SessionSettings
 

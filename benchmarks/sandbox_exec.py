@@ -12,9 +12,9 @@ import time
 
 import numpy as np
 
+from trajadapt.model.scene import Scene, SceneObject
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene, SceneObject
-from trajadapt.trajectory import Trajectory
 
 CODE = """
 import numpy as np

@@ -19,10 +19,10 @@ from pathlib import Path
 
 import numpy as np
 
-from trajadapt.case import load_case
+from trajadapt.model.case import load_case
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sim import SimulationOptions, simulate
 from trajadapt.skills import bind_skills
-from trajadapt.trajectory import Trajectory
 
 CASES = Path(__file__).resolve().parent / "cases"
 SKILLS = bind_skills()

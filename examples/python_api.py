@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from trajadapt import AdaptationSession, Case, Sandbox, Scene, SceneObject, Trajectory, get_backend
-from trajadapt.atomic_files import write_json_atomic
+from trajadapt.files.atomic_files import write_json_atomic
 from trajadapt.session import SessionSettings
 
 

@@ -8,10 +8,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from trajadapt.case import Case
+from trajadapt.model.case import Case
+from trajadapt.model.scene import Scene, SceneObject
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox.runner import Sandbox, SandboxLimits
-from trajadapt.scene import Scene, SceneObject
-from trajadapt.trajectory import Trajectory
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 OVITA_DIR = REPO_ROOT.parent / "shared" / "data" / "ovita-dev"

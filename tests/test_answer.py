@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from trajadapt.answer import parse_answer
 from trajadapt.errors import AnswerParseError
+from trajadapt.llm.answer import parse_answer
 
 CODE = "traj = get_trajectory()\nmodified_trajectory = traj\n"
 

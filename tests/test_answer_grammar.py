@@ -8,9 +8,9 @@ import re
 
 import pytest
 
-from trajadapt.answer_grammar import answer_grammar, is_statement_skill, parameter_kind, skill_parameters
-from trajadapt.gbnf import Grammar, Lit, Ref, Some, alt, seq
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.llm.answer_grammar import answer_grammar, is_statement_skill, parameter_kind, skill_parameters
+from trajadapt.llm.gbnf import Grammar, Lit, Ref, Some, alt, seq
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import system_prompt
 from trajadapt.skills import SKILLS
 
@@ -152,7 +152,7 @@ def test_a_name_may_be_written_in_lower_case() -> None:
 
 
 def test_an_answer_has_at_most_max_steps_skill_calls() -> None:
-    from trajadapt.answer_grammar import MAX_STEPS
+    from trajadapt.llm.answer_grammar import MAX_STEPS
 
     grammar = answer_grammar(SCENE)
     step = "t = shift(t, 'left', 0.1)"

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
 from trajadapt.chain import AdaptationChain
 from trajadapt.errors import SessionStateError
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
 from trajadapt.skills import bind_skills

@@ -11,17 +11,17 @@ import numpy as np
 import pytest
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case, load_case
-from trajadapt.constraints import (
+from trajadapt.checks.constraints import (
     Constraints,
     constraints_for,
     find_violations,
     new_violations,
     parse_constraints_text,
 )
-from trajadapt.projection import project
+from trajadapt.checks.projection import project
+from trajadapt.model.case import Case, load_case
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene, SceneObject
 from trajadapt.session import AdaptationSession, SessionSettings
 
 

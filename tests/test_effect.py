@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.effect import contradictions, measure_effect
-from trajadapt.geometry import Axes
-from trajadapt.scene import SceneObject
+from trajadapt.checks.effect import contradictions, measure_effect
+from trajadapt.model.geometry import Axes
+from trajadapt.model.scene import SceneObject
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.skills import bind_skills
-from trajadapt.trajectory import Trajectory
 
 SKILLS = bind_skills()
 BOX = SceneObject("box", 0.3, 0.5, 0.5)

@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from trajadapt.answer_grammar import answer_grammar, is_statement_skill
-from trajadapt.example_bank import Example, ExampleBank, default_bank, read_examples, terms
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.llm.answer_grammar import answer_grammar, is_statement_skill
+from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, read_examples, terms
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import first_messages
 from trajadapt.skills import SKILLS
 

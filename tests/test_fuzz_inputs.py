@@ -17,11 +17,11 @@ from click.testing import CliRunner
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from trajadapt.answer import parse_answer
-from trajadapt.case import load_case, load_scene
 from trajadapt.cli import cli
 from trajadapt.errors import AnswerParseError, InputError
-from trajadapt.trajectory import MAX_FILE_BYTES, load_trajectory_file
+from trajadapt.llm.answer import parse_answer
+from trajadapt.model.case import load_case, load_scene
+from trajadapt.model.trajectory import MAX_FILE_BYTES, load_trajectory_file
 
 # Derandomized so that CI runs the same examples each time; set derandomize=False to explore further.
 FUZZ = settings(

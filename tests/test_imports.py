@@ -9,7 +9,8 @@ from tests.conftest import REPO_ROOT
 
 PACKAGE = REPO_ROOT / "src" / "trajadapt"
 OUTER = {"cli": set(), "web": {"cli"}, "bench": {"cli"}}  # unit -> the only units that may import it
-FOUNDATION = {"errors", "safe_text", "geometry", "code_parse", "gbnf", "atomic_files", "wording"}
+FOUNDATION = {"errors", "safe_text", "model", "code_parse"}
+MAX_TOP_LEVEL_MODULES = 12
 
 
 def unit_of(module: str) -> str:
@@ -74,3 +75,8 @@ def test_the_foundation_imports_only_the_foundation() -> None:
     graph = unit_graph()
     for unit in FOUNDATION:
         assert graph[unit] <= FOUNDATION, f"{unit} imports {sorted(graph[unit] - FOUNDATION)}"
+
+
+def test_the_top_level_holds_few_modules_and_the_rest_are_packages() -> None:
+    modules = sorted(path.name for path in PACKAGE.glob("*.py"))
+    assert len(modules) <= MAX_TOP_LEVEL_MODULES, modules

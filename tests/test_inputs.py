@@ -8,9 +8,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from trajadapt.case import load_case, load_case_from_parts, load_scene
 from trajadapt.errors import InputError
-from trajadapt.trajectory import Trajectory, load_trajectory_file
+from trajadapt.model.case import load_case, load_case_from_parts, load_scene
+from trajadapt.model.trajectory import Trajectory, load_trajectory_file
 
 
 def write(path: Path, data: object) -> Path:
@@ -113,7 +113,7 @@ def test_trajectory_is_immutable() -> None:
 
 def test_a_csv_header_field_past_the_csv_limit_is_an_input_error(tmp_path):
     from trajadapt.errors import InputError
-    from trajadapt.trajectory import load_trajectory_file as load_trajectory
+    from trajadapt.model.trajectory import load_trajectory_file as load_trajectory
 
     path = tmp_path / "long.csv"
     path.write_text("x,y,z," + "v" * 140_000 + "\n1,2,3,4\n")
@@ -123,7 +123,7 @@ def test_a_csv_header_field_past_the_csv_limit_is_an_input_error(tmp_path):
 
 def test_a_csv_naming_a_column_twice_is_an_input_error(tmp_path):
     from trajadapt.errors import InputError
-    from trajadapt.trajectory import load_trajectory_file as load_trajectory
+    from trajadapt.model.trajectory import load_trajectory_file as load_trajectory
 
     path = tmp_path / "twice.csv"
     path.write_text("x,y,z,v,x\n1,2,3,4,5\n0,1,2,3,4\n")

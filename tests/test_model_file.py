@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from trajadapt.errors import ModelFileError
-from trajadapt.model_file import (
+from trajadapt.llm.model_file import (
     ModelSpec,
     assemble_model,
     check_gguf_header,
@@ -110,7 +110,7 @@ def test_header_reader(tmp_path: Path) -> None:
 
 
 def test_missing_part_package_names_the_extra(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    import trajadapt.model_file as model_file
+    import trajadapt.llm.model_file as model_file
 
     monkeypatch.setattr(model_file, "PART_COUNT", 1)
     monkeypatch.setattr(
@@ -123,7 +123,7 @@ def test_missing_part_package_names_the_extra(tmp_path: Path, monkeypatch: pytes
 def test_verified_model_is_not_rebuilt(
     tmp_path: Path, model_data: bytes, spec: ModelSpec, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    import trajadapt.model_file as model_file
+    import trajadapt.llm.model_file as model_file
 
     parts = split_into_parts(model_data, tmp_path)
     monkeypatch.setattr(model_file, "installed_part_paths", lambda: parts)

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.object_asks import object_asks, replace_object_steps
+from trajadapt.readers.object_asks import replace_object_steps
+from trajadapt.readers.object_words import object_asks
 
 NAMES = ["Lamp", "red box", "box", "sofa"]
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.part_scope import PartMove, part_moves, scope_to_parts
+from trajadapt.readers.part_scope import PartMove, part_moves, scope_to_parts
 
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
 

@@ -3,9 +3,9 @@
 import numpy as np
 
 from tests.conftest import line_trajectory
-from trajadapt.geometry import AXIS_CONVENTIONS
-from trajadapt.plot import MAX_LABELS, labelled, plot_comparison
-from trajadapt.scene import Scene, SceneObject
+from trajadapt.files.plot import MAX_LABELS, labelled, plot_comparison
+from trajadapt.model.geometry import AXIS_CONVENTIONS
+from trajadapt.model.scene import Scene, SceneObject
 
 
 def crowded(count: int) -> Scene:

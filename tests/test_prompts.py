@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from trajadapt.case import Case
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.model.case import Case
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import first_messages, render_functions, system_prompt
 from trajadapt.sandbox.api import CONTRACT
 

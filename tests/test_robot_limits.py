@@ -11,9 +11,7 @@ import pytest
 from click.testing import CliRunner
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
-from trajadapt.cli import cli
-from trajadapt.constraints import (
+from trajadapt.checks.constraints import (
     Constraints,
     approached_objects,
     constraints_for,
@@ -21,13 +19,15 @@ from trajadapt.constraints import (
     find_violations,
     index_ranges,
 )
+from trajadapt.checks.projection import project
+from trajadapt.checks.robot_limits import ROBOT_LIMITS, robot_constraints, user_constraints
+from trajadapt.cli import cli
 from trajadapt.errors import InputError
-from trajadapt.projection import project
-from trajadapt.robot_limits import ROBOT_LIMITS, robot_constraints, user_constraints
+from trajadapt.model.case import Case
+from trajadapt.model.scene import Scene, SceneObject
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene, SceneObject
 from trajadapt.session import AdaptationSession, SessionSettings
-from trajadapt.trajectory import Trajectory
 
 
 def line(count: int = 40, x: float = 0.0, z: float = 0.6, speed: float = 0.5) -> np.ndarray:

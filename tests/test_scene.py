@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from trajadapt.errors import InputError
-from trajadapt.scene import Scene, SceneObject, name_key, parse_objects
+from trajadapt.model.scene import Scene, SceneObject, name_key, parse_objects
 
 
 def test_objects_are_found_by_name_in_any_case_and_spacing() -> None:

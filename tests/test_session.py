@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
 from trajadapt.errors import AnswerParseError, SessionStateError
+from trajadapt.files.store import Store
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
-from trajadapt.store import Store
 
 SHIFT_LEFT = (
     "t = get_trajectory()\nw = np.linspace(0, 1, len(t))\nt[:, 0] += 0.2 * w\nmodified_trajectory = t\n"
@@ -182,7 +182,7 @@ def test_paper_mode_has_no_skills_and_needs_the_result_variable(simple_case: Cas
 
 
 def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandbox) -> None:
-    from trajadapt.geometry import AXIS_CONVENTIONS
+    from trajadapt.model.geometry import AXIS_CONVENTIONS
 
     code = "modified_trajectory = shift(get_trajectory(), 'left', 0.3)\n"
     session, backend = make_session(
@@ -221,7 +221,7 @@ def test_invented_detect_names_work_in_skills_mode(simple_case: Case, sandbox: S
 
 
 def test_skills_mode_sends_the_scenes_answer_grammar(simple_case: Case, sandbox: Sandbox) -> None:
-    from trajadapt.answer_grammar import answer_grammar
+    from trajadapt.llm.answer_grammar import answer_grammar
 
     code = "t = get_trajectory()\nt = shift(t, 'left', 0.3)\nmodified_trajectory = t"
     session, backend = make_session(simple_case, sandbox, answer("1) Shift left.", code))

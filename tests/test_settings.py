@@ -52,9 +52,9 @@ def test_an_unknown_choice_in_the_environment_is_a_clear_error(
 
 
 def test_the_choices_match_what_the_code_knows() -> None:
-    from trajadapt.geometry import AXIS_CONVENTIONS
+    from trajadapt.checks.robot_limits import ROBOT_NAMES
+    from trajadapt.model.geometry import AXIS_CONVENTIONS
     from trajadapt.prompts import PROMPT_MODES
-    from trajadapt.robot_limits import ROBOT_NAMES
     from trajadapt.settings import CHOICES
 
     assert set(CHOICES["axes"]) == set(AXIS_CONVENTIONS)
@@ -116,7 +116,7 @@ def test_every_variable_reaches_the_session(home: Path, monkeypatch: pytest.Monk
 
     for name, value in ENVIRONMENT.items():
         monkeypatch.setenv(f"TRAJADAPT_{name}", value)
-    assert set(ENV_FIELDS) - {"backend", "log", "isolation"} == set(SEEN)
+    assert set(ENV_FIELDS) - {"backend", "log", "memory", "isolation"} == set(SEEN)
     described = SessionSettings.from_settings(load_settings()).describe()
     assert {key: described[key] for key in SEEN} == SEEN
 

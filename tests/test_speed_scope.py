@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.speed_scope import localize_speed, scoped_object
+from trajadapt.readers.speed_scope import localize_speed, scoped_object
 
 NAMES = ["box", "red box", "person"]
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"

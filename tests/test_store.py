@@ -10,10 +10,10 @@ import pytest
 
 from trajadapt import __version__
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
+from trajadapt.files.store import MIGRATIONS, NewExchange, NewSession, Store
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
-from trajadapt.store import MIGRATIONS, NewExchange, NewSession, Store
 
 
 def new_session(**changes: object) -> NewSession:

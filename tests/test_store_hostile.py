@@ -9,7 +9,7 @@ from click.testing import CliRunner
 
 from trajadapt.cli import cli
 from trajadapt.errors import LogUnusable
-from trajadapt.store import MIGRATIONS, NewExchange, NewSession, Store
+from trajadapt.files.store import MIGRATIONS, NewExchange, NewSession, Store
 
 SESSION = NewSession("case", None, "go left", "scripted", "m", {}, {})
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from trajadapt.checks.review import validate_result
 from trajadapt.errors import InputError, InvalidTrajectory, InvalidWaypoints
-from trajadapt.review import validate_result
-from trajadapt.trajectory import Trajectory, waypoint_problem
+from trajadapt.model.trajectory import Trajectory, waypoint_problem
 
 GOOD = np.array([[0.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]])
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.unasked_directions import replace_unasked_shifts
+from trajadapt.readers.unasked_directions import replace_unasked_shifts
 
 NAMES = ["Lamp", "sofa"]
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"

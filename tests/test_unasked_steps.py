@@ -6,10 +6,10 @@ import json
 
 import pytest
 
-from trajadapt.case import Case
+from trajadapt.model.case import Case
+from trajadapt.readers.unasked_steps import TOPICS, leave_out_unasked
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.skills import SKILL_NAMES
-from trajadapt.unasked_steps import TOPICS, leave_out_unasked
 
 CODE = "t = get_trajectory()\nt = move_away(t, detect_objects('sandal'), 'a lot')\n{step}\nmodified_trajectory = t"
 

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.unstated_amounts import intensity_word, replace_unstated_amounts
+from trajadapt.readers.unstated_amounts import replace_unstated_amounts
+from trajadapt.readers.words import intensity_word
 
 START, END = "t = get_trajectory()\n", "\nmodified_trajectory = t"
 

@@ -12,14 +12,14 @@ import ast
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from trajadapt.height_asks import relate_heights
-from trajadapt.object_asks import replace_object_steps
-from trajadapt.part_scope import scope_to_parts
-from trajadapt.speed_scope import localize_speed
-from trajadapt.stated_amounts import use_stated_amounts
-from trajadapt.unasked_directions import replace_unasked_shifts
-from trajadapt.unasked_steps import leave_out_unasked
-from trajadapt.unstated_amounts import replace_unstated_amounts
+from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.object_asks import replace_object_steps
+from trajadapt.readers.part_scope import scope_to_parts
+from trajadapt.readers.speed_scope import localize_speed
+from trajadapt.readers.stated_amounts import use_stated_amounts
+from trajadapt.readers.unasked_directions import replace_unasked_shifts
+from trajadapt.readers.unasked_steps import leave_out_unasked
+from trajadapt.readers.unstated_amounts import replace_unstated_amounts
 
 NAMES = ["box", "red box", "Lamp", "goal"]
 FRAGMENTS = [

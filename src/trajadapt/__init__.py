@@ -12,11 +12,11 @@ from typing import Any
 __version__ = "0.1.0"
 
 _EXPORTS = {
-    "Trajectory": "trajadapt.trajectory",
-    "Scene": "trajadapt.scene",
-    "SceneObject": "trajadapt.scene",
-    "Case": "trajadapt.case",
-    "load_case": "trajadapt.case",
+    "Trajectory": "trajadapt.model.trajectory",
+    "Scene": "trajadapt.model.scene",
+    "SceneObject": "trajadapt.model.scene",
+    "Case": "trajadapt.model.case",
+    "load_case": "trajadapt.model.case",
     "AdaptationSession": "trajadapt.session",
     "AdaptationResult": "trajadapt.session",
     "get_backend": "trajadapt.backends.registry",

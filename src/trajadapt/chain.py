@@ -12,14 +12,14 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Any, Literal
 
-from trajadapt.answer import Plan
 from trajadapt.backends.base import Backend
-from trajadapt.case import Case
 from trajadapt.errors import SessionStateError
+from trajadapt.files.store import Store
+from trajadapt.llm.answer import Plan
 from trajadapt.memory import MemoryBank
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, Outcome, ProgressCallback, SessionSettings
-from trajadapt.store import Store
 
 Target = Literal["current", "original"]
 

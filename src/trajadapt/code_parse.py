@@ -10,7 +10,7 @@ from __future__ import annotations
 import ast
 import threading
 
-from trajadapt.geometry import DIRECTION_SYNONYMS
+from trajadapt.model.geometry import DIRECTION_SYNONYMS
 
 _PARSE_LOCK = threading.Lock()
 
@@ -96,3 +96,27 @@ def detected_name(node: ast.expr) -> str | None:
 def in_place_of(line: str, new: str) -> str:
     """``new`` with the indentation of ``line``: a line of code replaced where it stands."""
     return line[: len(line) - len(line.lstrip())] + new
+
+
+DISTANCE_STEPS = ("avoid", "move_away", "move_closer")
+SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
+"""Steps that change the distance to an object, and steps that change the speed."""
+
+
+def objects_of(call: ast.Call | None) -> list[str]:
+    """The object names of the call's point argument: one ``detect_objects`` or a list of them."""
+    if call is None or len(call.args) < 2:
+        return []
+    point = call.args[1]
+    items = point.elts if isinstance(point, ast.List | ast.Tuple) else [point]
+    return [detected_name(item) or "" for item in items]
+
+
+def step_on_object(line: str, name: str) -> bool:
+    """Whether ``line`` is a distance step (``avoid``, ``move_away``, ``move_closer``) on object ``name``."""
+    return on_object(call_of(line, DISTANCE_STEPS), name)
+
+
+def on_object(call: ast.Call | None, name: str) -> bool:
+    """Whether the call's point argument names object ``name``."""
+    return any(found.casefold() == name.casefold() for found in objects_of(call))

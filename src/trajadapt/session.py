@@ -13,15 +13,15 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from trajadapt import __version__
-from trajadapt.answer import Plan, parse_answer
-from trajadapt.answer_grammar import answer_grammar
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
-from trajadapt.case import Case
+from trajadapt.checks.constraints import ConstraintMove, Constraints, constraints_for, new_violations
+from trajadapt.checks.effect import Effect, contradictions, measure_effect
+from trajadapt.checks.projection import project
+from trajadapt.checks.review import ReviewNote, review_notes, validate_result
+from trajadapt.checks.robot_limits import robot_constraints
 from trajadapt.clauses.check import clause_findings
 from trajadapt.clauses.grammar import MAX_CLAUSES, attribute_lines, clause_answer_grammar
 from trajadapt.clauses.split import split_clauses
-from trajadapt.constraints import ConstraintMove, Constraints, constraints_for, new_violations
-from trajadapt.effect import Effect, contradictions, measure_effect
 from trajadapt.errors import (
     AnswerParseError,
     BackendError,
@@ -30,16 +30,23 @@ from trajadapt.errors import (
     InvalidTrajectory,
     SessionStateError,
 )
-from trajadapt.example_bank import Example
-from trajadapt.geometry import AXIS_CONVENTIONS, AxisConvention
-from trajadapt.height_asks import relate_heights
+from trajadapt.files.store import NewExchange, NewSession, Store
+from trajadapt.llm.answer import Plan, parse_answer
+from trajadapt.llm.answer_grammar import answer_grammar
+from trajadapt.llm.example_bank import Example
 from trajadapt.memory import MemoryBank, RememberedExample, choose_examples
-from trajadapt.object_asks import replace_object_steps
-from trajadapt.part_scope import scope_to_parts
-from trajadapt.projection import project
+from trajadapt.model.case import Case
+from trajadapt.model.geometry import AXIS_CONVENTIONS, AxisConvention
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.prompts import first_messages, render
-from trajadapt.review import ReviewNote, review_notes, validate_result
-from trajadapt.robot_limits import robot_constraints
+from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.object_asks import replace_object_steps
+from trajadapt.readers.part_scope import scope_to_parts
+from trajadapt.readers.speed_scope import localize_speed
+from trajadapt.readers.stated_amounts import use_stated_amounts
+from trajadapt.readers.unasked_directions import replace_unasked_shifts
+from trajadapt.readers.unasked_steps import leave_out_unasked
+from trajadapt.readers.unstated_amounts import replace_unstated_amounts
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
@@ -47,13 +54,6 @@ from trajadapt.sandbox.skill_program import check_skill_program
 from trajadapt.settings import Settings
 from trajadapt.skills import SKILLS, signature_line, summary
 from trajadapt.skills.explain import explain_code
-from trajadapt.speed_scope import localize_speed
-from trajadapt.stated_amounts import use_stated_amounts
-from trajadapt.store import NewExchange, NewSession, Store
-from trajadapt.trajectory import Trajectory
-from trajadapt.unasked_directions import replace_unasked_shifts
-from trajadapt.unasked_steps import leave_out_unasked
-from trajadapt.unstated_amounts import replace_unstated_amounts
 
 TurnKind = Literal["draft", "feedback", "repair", "format-retry"]
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from trajadapt.model_file import ensure_model
+from trajadapt.llm.model_file import ensure_model
 
 
 def model_available() -> bool:

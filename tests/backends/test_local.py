@@ -14,9 +14,9 @@ from tests.backends.conftest import needs_model
 from trajadapt.backends.base import ChatMessage, ChatRequest
 from trajadapt.backends.conformance import check_backend
 from trajadapt.backends.local import ANSWER_SCHEMA, LocalBackend, LocalOptions
-from trajadapt.case import Case
 from trajadapt.errors import EmptyCompletion
-from trajadapt.model_file import PINNED_SHA256, verify_model_file
+from trajadapt.llm.model_file import PINNED_SHA256, verify_model_file
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 
@@ -220,7 +220,7 @@ def test_a_request_grammar_constrains_decoding_unless_turned_off() -> None:
 
     from llama_cpp.llama_grammar import LlamaGrammar
 
-    from trajadapt.answer_grammar import answer_grammar
+    from trajadapt.llm.answer_grammar import answer_grammar
 
     request = replace(REQUEST, grammar=answer_grammar(("box",)).to_gbnf())
     fake = FakeLlama("{}")

@@ -12,8 +12,8 @@ import pytest
 from trajadapt.bench.judges import CHECKS, CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, roughness
 from trajadapt.bench.runner import discover_cases, evaluate
-from trajadapt.case import load_case
-from trajadapt.geometry import Axes
+from trajadapt.model.case import load_case
+from trajadapt.model.geometry import Axes
 from trajadapt.skills import events, objects, shape, speed
 
 N = 60

@@ -1,11 +1,11 @@
 import numpy as np
 
 from tests.conftest import line_trajectory
+from trajadapt.checks.effect import measure_effect
 from trajadapt.clauses.check import clause_findings
-from trajadapt.effect import measure_effect
-from trajadapt.geometry import Axes
-from trajadapt.scene import SceneObject
-from trajadapt.trajectory import Trajectory
+from trajadapt.model.geometry import Axes
+from trajadapt.model.scene import SceneObject
+from trajadapt.model.trajectory import Trajectory
 
 LAMP = SceneObject("lamp", 0.2, 0.5, 0.5)
 

@@ -4,8 +4,8 @@ import json
 
 from tests.conftest import line_trajectory
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
-from trajadapt.scene import Scene, SceneObject
+from trajadapt.model.case import Case
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.session import AdaptationSession, SessionSettings
 
 

@@ -10,10 +10,10 @@ from pathlib import Path
 from click.testing import CliRunner
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.case import Case
 from trajadapt.chain import AdaptationChain
 from trajadapt.cli import cli
 from trajadapt.memory import MemoryBank
+from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from trajadapt.errors import PlanningError
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.planning import plan_case
-from trajadapt.scene import Scene, SceneObject
 
 ROOM = Scene(
     (SceneObject("person", 62, 45, 0), SceneObject("sofa", 25, 65, 0), SceneObject("box", 45, 25, 0),

@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from trajadapt.atomic_files import publish_bytes
 from trajadapt.cli import cli
 from trajadapt.errors import InputError
+from trajadapt.files.atomic_files import publish_bytes
 
 ROWS = [[0.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 2.0, 0.0, 1.0]]
 
@@ -84,7 +84,7 @@ def test_a_writer_killed_half_way_leaves_nothing_in_the_folder(tmp_path):
     script = (
         "import os, sys, signal\n"
         "from pathlib import Path\n"
-        "import trajadapt.atomic_files as a\n"
+        "import trajadapt.files.atomic_files as a\n"
         "real = a._write_all\n"
         "def dying(handle, payload):\n"
         "    os.write(handle, payload[:10])\n"

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
 from trajadapt.cli import cli
-from trajadapt.rosbag_io import MULTIDOF_TYPE, path_directions, read_bag_trajectory, times_from_speeds
+from trajadapt.files.rosbag_io import MULTIDOF_TYPE, path_directions, read_bag_trajectory, times_from_speeds
 
 pytest.importorskip("rosbags")
 

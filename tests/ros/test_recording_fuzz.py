@@ -11,9 +11,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from trajadapt.errors import InputError
-from trajadapt.recording_limits import MAX_DECOMPRESSED_BYTES, MCAP_MAGIC, check_declared_sizes
-from trajadapt.rosbag_io import read_bag_trajectory, write_paths
-from trajadapt.trajectory import Trajectory
+from trajadapt.files.recording_limits import MAX_DECOMPRESSED_BYTES, MCAP_MAGIC, check_declared_sizes
+from trajadapt.files.rosbag_io import read_bag_trajectory, write_paths
+from trajadapt.model.trajectory import Trajectory
 
 pytest.importorskip("rosbags")
 
@@ -91,7 +91,7 @@ def test_a_message_too_large_to_hold_is_refused_before_it_is_deserialized(tmp_pa
     write_paths(
         path, fmt, {"/plan": Trajectory.from_rows(np.column_stack([s, s, s, s + 1]).tolist(), "rows")}
     )
-    monkeypatch.setattr("trajadapt.rosbag_io.MAX_MESSAGE_BYTES", 20_000)
+    monkeypatch.setattr("trajadapt.files.rosbag_io.MAX_MESSAGE_BYTES", 20_000)
     deserialized: list[str] = []
     original = rosbags.highlevel.AnyReader.deserialize
     monkeypatch.setattr(

@@ -12,7 +12,7 @@ from click.testing import CliRunner
 
 from trajadapt.cli import cli
 from trajadapt.errors import InputError
-from trajadapt.rosbag_io import read_bag_trajectory, rows_from_times, times_from_speeds
+from trajadapt.files.rosbag_io import read_bag_trajectory, rows_from_times, times_from_speeds
 
 rosbags = pytest.importorskip("rosbags")
 from rosbags.rosbag1 import Writer as Writer1  # noqa: E402

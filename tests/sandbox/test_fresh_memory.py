@@ -17,8 +17,8 @@ import pytest
 
 from tests.conftest import line_trajectory
 from tests.sandbox.test_os_layers import ISOLATIONS
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.sandbox.runner import Sandbox, SandboxLimits
-from trajadapt.scene import Scene, SceneObject
 
 SCAN = """
 import ctypes

@@ -9,8 +9,8 @@ import pytest
 from tests.conftest import line_trajectory
 from tests.sandbox.hostile_snippets import HOSTILE_SNIPPETS, MARKER
 from tests.sandbox.os_attacks import OS_ATTACKS
+from trajadapt.model.scene import Scene
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene
 
 
 def test_corpus_is_large_enough() -> None:

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from tests.conftest import line_trajectory
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.sandbox import seccomp
 from trajadapt.sandbox.guard import check_code
 from trajadapt.sandbox.restricted import BoundedOutput, SafeModule, make_builtins, preload_modules
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene, SceneObject
 
 
 def test_safe_module_never_hands_back_a_disallowed_module() -> None:

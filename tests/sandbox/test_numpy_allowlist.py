@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 
 from tests.conftest import line_trajectory
+from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.sandbox.allowed_names import ALLOWED_ATTRIBUTES, MODULE_MEMBERS
 from trajadapt.sandbox.guard import ALLOWED_MODULES, check_code
 from trajadapt.sandbox.restricted import preload_modules
 from trajadapt.sandbox.runner import Sandbox
-from trajadapt.scene import Scene, SceneObject
 
 SUCCESS = "\nmodified_trajectory = get_trajectory()\n"
 

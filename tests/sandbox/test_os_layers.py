@@ -21,9 +21,9 @@ import pytest
 
 from tests.conftest import line_trajectory
 from tests.sandbox.os_attacks import OS_ATTACKS
+from trajadapt.model.scene import Scene
 from trajadapt.sandbox.bubblewrap import bwrap_command
 from trajadapt.sandbox.runner import PACKAGE_ROOT, Sandbox, SandboxLimits
-from trajadapt.scene import Scene
 
 pytestmark = pytest.mark.skipif(
     platform.system() != "Linux" or platform.machine() != "x86_64",

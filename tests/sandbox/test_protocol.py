@@ -10,6 +10,7 @@ import pytest
 
 from tests.conftest import line_trajectory
 from trajadapt.errors import SandboxError
+from trajadapt.model.scene import Scene
 from trajadapt.sandbox.protocol import (
     ProtocolError,
     decode_json,
@@ -17,7 +18,6 @@ from trajadapt.sandbox.protocol import (
     read_worker_answer,
 )
 from trajadapt.sandbox.runner import Sandbox, SandboxLimits
-from trajadapt.scene import Scene
 
 GOOD_RESULT = {
     "ok": True,

@@ -7,8 +7,8 @@ import pytest
 
 from tests.conftest import line_trajectory
 from tests.sandbox.test_os_layers import ISOLATIONS
+from trajadapt.model.scene import Scene
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxLimits
-from trajadapt.scene import Scene
 
 
 @pytest.fixture(scope="module", params=ISOLATIONS)

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from trajadapt.errors import SimulationError
-from trajadapt.scene import Scene, SceneObject
+from trajadapt.model.scene import Scene, SceneObject
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sim import SimulationOptions, simulate
-from trajadapt.trajectory import Trajectory
 
 pytestmark = pytest.mark.sim
 # The test paths are already in metres and in the simulator's own (right-handed, +X right) frame.

@@ -7,7 +7,7 @@ import json
 
 import pytest
 
-from trajadapt.answer_grammar import is_statement_skill, skill_parameters
+from trajadapt.llm.answer_grammar import is_statement_skill, skill_parameters
 from trajadapt.skills import SKILLS
 from trajadapt.skills.explain import TEMPLATES, explain_code
 

@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from trajadapt.case import load_case
-from trajadapt.geometry import Axes
+from trajadapt.model.case import load_case
+from trajadapt.model.geometry import Axes
 from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
 from trajadapt.skills.core import AMOUNT_WORDS, as_point, resolve_amount
 from trajadapt.skills.objects import CLOSER_FRACTIONS

@@ -13,10 +13,10 @@ from fastapi import FastAPI
 from fastapi.testclient import TestClient
 
 from trajadapt.backends.registry import get_backend
+from trajadapt.files.store import Store
 from trajadapt.memory import MemoryBank
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
-from trajadapt.store import Store
 from trajadapt.web.app import create_app
 from trajadapt.web.services import Services, pybullet_simulator
 

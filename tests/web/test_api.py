@@ -151,8 +151,8 @@ def test_the_pages_limits_bind_the_session_and_the_effect_says_what_they_moved(c
 
 
 def test_a_server_with_logging_off_writes_nothing(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from trajadapt.checks.constraints import Constraints
     from trajadapt.cli.serve import _build_app
-    from trajadapt.constraints import Constraints
     from trajadapt.settings import load_settings
 
     home = tmp_path / "home"

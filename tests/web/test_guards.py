@@ -11,7 +11,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from tests.web.conftest import CASE, FIRST, build_app, wait_idle
-from trajadapt.store import Store
+from trajadapt.files.store import Store
 from trajadapt.web.guards import MAX_BODY_BYTES, attachment, host_name
 
 

@@ -17,7 +17,7 @@ from typing import Any
 from trajadapt.backends.base import Backend, ChatRequest, Completion, PrepareProgress, Usage
 from trajadapt.backends.prompt_state import PromptStateCache
 from trajadapt.errors import BackendRejected, BackendUnavailable, DependencyNotInstalled, EmptyCompletion
-from trajadapt.model_file import MODEL_FILENAME, ensure_model
+from trajadapt.llm.model_file import MODEL_FILENAME, ensure_model
 from trajadapt.settings import default_home
 
 

@@ -11,7 +11,7 @@ from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.errors import BackendOptionError, EmptyCompletion, InputError
-from trajadapt.trajectory import read_json_file
+from trajadapt.model.trajectory import read_json_file
 
 
 @dataclass(frozen=True)

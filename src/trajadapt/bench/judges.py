@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.geometry import Array, Axes, extent, progress
+from trajadapt.model.geometry import Array, Axes, extent, progress
 
 REAL_CHANGE = 0.02  # of the original's size: smaller moves do not count as a change
 NEAR_FRACTION = 0.25  # the share of waypoints nearest an object that count as "near" it

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.geometry import Array
+from trajadapt.model.geometry import Array
 
 
 def _pairwise(a: Array, b: Array, columns: int = 3) -> Array:

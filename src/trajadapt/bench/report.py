@@ -11,11 +11,11 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.atomic_files import write_bytes_atomic, write_json_atomic
-from trajadapt.geometry import AXIS_CONVENTIONS
-from trajadapt.plot import plot_comparison
-from trajadapt.scene import Scene, parse_objects
-from trajadapt.trajectory import Trajectory
+from trajadapt.files.atomic_files import write_bytes_atomic, write_json_atomic
+from trajadapt.files.plot import plot_comparison
+from trajadapt.model.geometry import AXIS_CONVENTIONS
+from trajadapt.model.scene import Scene, parse_objects
+from trajadapt.model.trajectory import Trajectory
 
 logger = logging.getLogger(__name__)
 

@@ -20,18 +20,18 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.atomic_files import write_json_atomic
 from trajadapt.backends.base import Backend
 from trajadapt.bench.expectations import EXPECTATIONS_FILENAME, ExpectationSet, find_expectations
 from trajadapt.bench.judges import CheckContext, run_check
 from trajadapt.bench.metrics import discrete_frechet, dynamic_time_warping, latte_scores, roughness
-from trajadapt.case import Case, load_case
 from trajadapt.errors import InputError, TrajadaptError
-from trajadapt.geometry import AXIS_CONVENTIONS, Axes
+from trajadapt.files.atomic_files import write_json_atomic
 from trajadapt.memory import MemoryBank
+from trajadapt.model.case import Case, load_case
+from trajadapt.model.geometry import AXIS_CONVENTIONS, Axes
+from trajadapt.model.trajectory import Trajectory, read_json_file
 from trajadapt.sandbox.runner import Isolation, Sandbox
 from trajadapt.session import AdaptationSession, Failure, SessionSettings
-from trajadapt.trajectory import Trajectory, read_json_file
 
 
 @dataclass(frozen=True)

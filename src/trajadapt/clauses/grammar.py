@@ -19,7 +19,8 @@ import re
 from collections.abc import Sequence
 from functools import lru_cache
 
-from trajadapt.answer_grammar import (
+from trajadapt.clauses.split import only_keeps
+from trajadapt.llm.answer_grammar import (
     LANDMARKS,
     NEWLINE,
     call_rule,
@@ -28,14 +29,13 @@ from trajadapt.answer_grammar import (
     usable_names,
     value_rules,
 )
-from trajadapt.clauses.split import only_keeps
-from trajadapt.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Some, alt, renamed, seq
-from trajadapt.geometry import PART_WORDS
+from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Some, alt, renamed, seq
+from trajadapt.model.geometry import PART_WORDS
+from trajadapt.readers.words import names_in, whole_words
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.skills import SKILLS
 from trajadapt.skills.events import POSITION_WORDS
 from trajadapt.skills.speed import SPEED_FACTORS
-from trajadapt.wording import names_in, whole_words
 
 MAX_STEPS_PER_CLAUSE = 2
 """A clause may ask two things at once ("go up by 0.1 at a constant speed of 0.2")."""

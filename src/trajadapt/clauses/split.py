@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from trajadapt.wording import asked_kinds, moving_directions, names_in, whole_words
+from trajadapt.readers.words import asked_kinds, moving_directions, names_in, whole_words
 
 BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""

@@ -7,10 +7,9 @@ from typing import Any
 
 import click
 
-from trajadapt.atomic_files import sibling_file, write_json_atomic
 from trajadapt.backends.base import Backend
-from trajadapt.case import Case, load_case, load_case_from_parts
 from trajadapt.chain import AdaptationChain
+from trajadapt.checks.constraints import Constraints
 from trajadapt.cli.common import (
     backend_option,
     examples_option,
@@ -22,19 +21,20 @@ from trajadapt.cli.common import (
 )
 from trajadapt.cli.console import Progress, show_plan, show_result
 from trajadapt.cli.robots import ROBOT_NAMES, run_and_report
-from trajadapt.constraints import Constraints
 from trajadapt.errors import InputError, SessionStateError
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.files.atomic_files import sibling_file, write_json_atomic
+from trajadapt.files.plot import plot_comparison
+from trajadapt.files.rosbag_io import is_bag, read_bag_trajectory
+from trajadapt.files.store import Store
 from trajadapt.memory import MemoryBank
-from trajadapt.plot import plot_comparison
+from trajadapt.model.case import Case, load_case, load_case_from_parts
+from trajadapt.model.geometry import AXIS_CONVENTIONS
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.prompts import PROMPT_MODES
-from trajadapt.rosbag_io import is_bag, read_bag_trajectory
 from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, AdaptationSession, SessionSettings
 from trajadapt.settings import Settings, load_settings
-from trajadapt.store import Store
-from trajadapt.trajectory import Trajectory
 
 
 @click.command()

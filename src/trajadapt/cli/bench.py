@@ -21,8 +21,8 @@ from trajadapt.cli.common import (
 )
 from trajadapt.cli.console import CaseProgress
 from trajadapt.errors import InputError
-from trajadapt.geometry import AXIS_CONVENTIONS
 from trajadapt.memory import MemoryBank
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import PROMPT_MODES
 from trajadapt.session import SessionSettings
 from trajadapt.settings import load_settings

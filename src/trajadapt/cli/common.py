@@ -11,9 +11,9 @@ import click
 
 from trajadapt.backends.base import Backend
 from trajadapt.backends.registry import get_backend
+from trajadapt.checks.robot_limits import ROBOT_LIMITS, ROBOT_NAMES, user_constraints
 from trajadapt.cli.console import PrepareBar
 from trajadapt.errors import InputError
-from trajadapt.robot_limits import ROBOT_LIMITS, ROBOT_NAMES, user_constraints
 from trajadapt.sandbox.runner import Isolation
 from trajadapt.settings import Settings
 

@@ -11,7 +11,7 @@ from typing import TextIO
 
 import click
 
-from trajadapt.answer import Plan
+from trajadapt.llm.answer import Plan
 from trajadapt.session import AdaptationResult
 from trajadapt.skills.explain import explain_code
 

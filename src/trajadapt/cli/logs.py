@@ -7,8 +7,8 @@ from datetime import datetime
 
 import click
 
+from trajadapt.files.store import Store
 from trajadapt.settings import load_settings
-from trajadapt.store import Store
 
 
 @click.command()

@@ -7,10 +7,10 @@ from pathlib import Path
 import click
 import numpy as np
 
-from trajadapt.atomic_files import sibling_file, write_json_atomic
-from trajadapt.case import load_scene
 from trajadapt.errors import InputError
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.files.atomic_files import sibling_file, write_json_atomic
+from trajadapt.model.case import load_scene
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.settings import load_settings
 from trajadapt.sim.inputs import load_run_input
 

@@ -9,10 +9,10 @@ from pathlib import Path
 
 import click
 
-from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import InputError
-from trajadapt.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, times_from_speeds, write_paths
-from trajadapt.trajectory import Trajectory, read_json_file
+from trajadapt.files.atomic_files import publish_bytes
+from trajadapt.files.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, times_from_speeds, write_paths
+from trajadapt.model.trajectory import Trajectory, read_json_file
 
 FORMATS = ("mcap", "bag", "csv", "json")
 MESSAGES = {"path": PATH_TYPE, "multidof": MULTIDOF_TYPE}

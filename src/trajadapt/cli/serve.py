@@ -10,16 +10,16 @@ from typing import TYPE_CHECKING
 
 import click
 
+from trajadapt.checks.constraints import Constraints
 from trajadapt.cli.common import backend_option, isolation_of, limits_options, make_backend, option_option
-from trajadapt.constraints import Constraints
 from trajadapt.errors import DependencyNotInstalled, InputError
-from trajadapt.geometry import AXIS_CONVENTIONS
+from trajadapt.files.store import Store
 from trajadapt.memory import MemoryBank
+from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import PROMPT_MODES
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import SessionSettings
 from trajadapt.settings import Settings, load_settings
-from trajadapt.store import Store
 
 if TYPE_CHECKING:
     from fastapi import FastAPI

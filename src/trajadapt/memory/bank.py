@@ -21,10 +21,10 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from trajadapt.atomic_files import publish_bytes
 from trajadapt.clauses.split import split_clauses
 from trajadapt.errors import MemoryUnusable
-from trajadapt.example_bank import Example
+from trajadapt.files.atomic_files import publish_bytes
+from trajadapt.llm.example_bank import Example
 from trajadapt.memory.placeholders import PLACEHOLDER, abstract, fill, looked_up
 from trajadapt.sandbox.guard import check_code
 

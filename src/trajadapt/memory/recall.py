@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from trajadapt.example_bank import Example, ExampleBank, default_bank, terms
+from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, terms
 from trajadapt.memory.bank import RememberedExample
 
 NEAR = 0.5

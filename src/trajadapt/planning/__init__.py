@@ -1,6 +1,6 @@
 """Initial trajectories from planners, so the loop plan -> adapt -> simulate starts from nothing.
 
-``plan_case(scene, start, goal, planner)`` returns a :class:`~trajadapt.case.Case` whose trajectory
+``plan_case(scene, start, goal, planner)`` returns a :class:`~trajadapt.model.case.Case` whose trajectory
 avoids the scene's objects: ``rrt`` (ompl, 2-D or 3-D) or ``astar`` (a grid in the plane, for a ground
 robot), resampled evenly with rounded corners and a trapezoidal speed profile.
 """
@@ -11,14 +11,14 @@ from collections.abc import Callable
 
 import numpy as np
 
-from trajadapt.case import Case
 from trajadapt.errors import PlanningError
+from trajadapt.model.case import Case
+from trajadapt.model.scene import Scene
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.planning.astar import plan_astar
 from trajadapt.planning.obstacles import Array, PlanningProblem, build_problem
 from trajadapt.planning.profile import resample_rounded, trapezoidal_speeds
 from trajadapt.planning.rrt import plan_rrt
-from trajadapt.scene import Scene
-from trajadapt.trajectory import Trajectory
 
 PLANNERS: dict[str, Callable[[PlanningProblem], Array]] = {"rrt": plan_rrt, "astar": plan_astar}
 

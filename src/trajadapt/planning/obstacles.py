@@ -8,7 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.errors import PlanningError
-from trajadapt.scene import Scene
+from trajadapt.model.scene import Scene
 
 Array = npt.NDArray[np.float64]
 DEFAULT_CLEARANCE_FRACTION = 0.08  # of the box's largest side, when objects have no size

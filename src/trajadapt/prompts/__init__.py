@@ -14,12 +14,12 @@ from string import Template
 import numpy as np
 
 from trajadapt.backends.base import ChatMessage
-from trajadapt.case import Case
-from trajadapt.geometry import AxisConvention
 from trajadapt.memory import RememberedExample, choose_examples
+from trajadapt.model.case import Case
+from trajadapt.model.geometry import AxisConvention
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox.api import CONTRACT, RESULT_VARIABLE
 from trajadapt.skills import describe_skills
-from trajadapt.trajectory import Trajectory
 
 PROMPT_MODES = ("skills", "paper")
 

@@ -33,7 +33,7 @@ NUMPY_MEMBERS = frozenset(
         "insert", "delete", "repeat", "tile", "flip", "flipud", "fliplr", "roll", "squeeze",
         "expand_dims", "transpose", "atleast_1d", "atleast_2d", "ravel", "sort", "argsort",
         "unique", "where", "nonzero", "argwhere", "searchsorted", "take", "split",
-        "array_split",
+        "array_split", "c_", "r_",
         # reductions and statistics
         "sum", "prod", "mean", "median", "average", "std", "var", "min", "max", "amin",
         "amax", "argmin", "argmax", "cumsum", "cumprod", "diff", "gradient", "ptp",

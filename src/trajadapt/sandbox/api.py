@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.scene import name_key
+from trajadapt.model.scene import name_key
 
 RESULT_VARIABLE = "modified_trajectory"
 

@@ -27,6 +27,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from trajadapt.model.trajectory import MAX_WAYPOINTS
 from trajadapt.safe_text import safe_text
 from trajadapt.sandbox.api import RESULT_VARIABLE, build_api
 from trajadapt.sandbox.guard import check_code
@@ -45,7 +46,6 @@ from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_m
 from trajadapt.sandbox.rewrite import assign_discarded_results
 from trajadapt.sandbox.template import Template, TemplateGone, ended, send_job
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
-from trajadapt.trajectory import MAX_WAYPOINTS
 
 GENERATED_FILENAME = "<generated>"
 # Names a small model invents for detect_objects (seen in the benchmark); in skills mode they work too.

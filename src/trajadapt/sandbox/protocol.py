@@ -13,8 +13,8 @@ import json
 from dataclasses import dataclass
 from typing import Any
 
+from trajadapt.model.trajectory import MAX_WAYPOINTS
 from trajadapt.safe_text import MESSAGE_CHARS, safe_text
-from trajadapt.trajectory import MAX_WAYPOINTS
 
 MAX_CHILD_BYTES = 16 * 1024 * 1024
 """Largest result a child may write (100,000 waypoints of four numbers fit well within it)."""

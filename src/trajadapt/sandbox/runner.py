@@ -17,11 +17,11 @@ from types import TracebackType
 from typing import IO, Any, Literal
 
 from trajadapt.errors import SandboxError
+from trajadapt.model.scene import Scene
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox import seccomp
 from trajadapt.sandbox.bubblewrap import bwrap_command
 from trajadapt.sandbox.protocol import MAX_ANSWER_CHARS, ProtocolError, WorkerAnswer, read_worker_answer
-from trajadapt.scene import Scene
-from trajadapt.trajectory import Trajectory
 
 logger = logging.getLogger(__name__)
 

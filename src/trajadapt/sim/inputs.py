@@ -5,10 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from trajadapt.case import case_from_dict
 from trajadapt.errors import InputError
-from trajadapt.scene import Scene, parse_objects
-from trajadapt.trajectory import Trajectory, read_json_file
+from trajadapt.model.case import case_from_dict
+from trajadapt.model.scene import Scene, parse_objects
+from trajadapt.model.trajectory import Trajectory, read_json_file
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ import numpy as np
 import numpy.typing as npt
 from PIL import Image, ImageDraw
 
-from trajadapt.atomic_files import write_bytes_atomic
+from trajadapt.files.atomic_files import write_bytes_atomic
 from trajadapt.sim.engine import World
 from trajadapt.sim.robots.base import CameraPose
 

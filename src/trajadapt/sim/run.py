@@ -11,14 +11,14 @@ import numpy as np
 from PIL import Image
 
 from trajadapt.errors import SimulationError
-from trajadapt.scene import Scene
+from trajadapt.model.scene import Scene
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.sim.engine import PHYSICS_HZ, World
 from trajadapt.sim.reference import Reference, build_reference
 from trajadapt.sim.render import Camera, Overlay, save_gif, save_png
 from trajadapt.sim.report import Array, SimulationReport, measure_tracking
 from trajadapt.sim.robots import ROBOTS, Robot
 from trajadapt.sim.workspace import WorkspaceMap, fit_workspace
-from trajadapt.trajectory import Trajectory
 
 SETTLE_S = 1.5  # simulated time after the last waypoint is due
 MAX_SIMULATED_S = 600.0

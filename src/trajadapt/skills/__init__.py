@@ -12,7 +12,7 @@ import inspect
 from collections.abc import Callable
 from typing import Any
 
-from trajadapt.geometry import PAPER_AXES, Axes
+from trajadapt.model.geometry import PAPER_AXES, Axes
 from trajadapt.skills import events, objects, shape, speed
 
 SKILLS: tuple[Callable[..., Any], ...] = (

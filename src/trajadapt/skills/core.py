@@ -12,7 +12,7 @@ from typing import Annotated, Any
 
 import numpy as np
 
-from trajadapt.geometry import PART_WORDS, Array, extent, progress
+from trajadapt.model.geometry import PART_WORDS, Array, extent, progress
 
 
 @dataclass(frozen=True)

@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.geometry import PAPER_AXES, Array, Axes, extent
+from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent
 from trajadapt.skills.core import (
     DirectionArg,
     DistanceArg,

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from typing import Any
 
 from trajadapt.code_parse import parse_code
-from trajadapt.geometry import PART_WORDS
+from trajadapt.model.geometry import PART_WORDS
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS
 from trajadapt.skills.objects import CLOSER_FRACTIONS

@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.geometry import Array, extent, progress
+from trajadapt.model.geometry import Array, extent, progress
 from trajadapt.skills.core import (
     DistanceArg,
     FractionArg,

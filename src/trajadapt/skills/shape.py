@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.geometry import PAPER_AXES, Array, Axes, extent, progress
+from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent, progress
 from trajadapt.skills.core import (
     DirectionArg,
     DistanceArg,

@@ -20,13 +20,13 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import FileResponse, JSONResponse, Response
 from pydantic import BaseModel, Field
 
-from trajadapt.case import Case, case_from_dict
-from trajadapt.constraints import Constraints
+from trajadapt.checks.constraints import Constraints
+from trajadapt.checks.robot_limits import user_constraints
 from trajadapt.errors import BackendError, BackendTimeout, InputError, SessionStateError, TrajadaptError
-from trajadapt.robot_limits import user_constraints
+from trajadapt.model.case import Case, case_from_dict
+from trajadapt.model.scene import NAME_CHARS
+from trajadapt.model.trajectory import parse_json_text
 from trajadapt.safe_text import safe_text
-from trajadapt.scene import NAME_CHARS
-from trajadapt.trajectory import parse_json_text
 from trajadapt.web.guards import (
     LOOPBACK_HOSTS,
     MAX_BODY_BYTES,

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from trajadapt.errors import SessionStateError
-from trajadapt.store import Store
+from trajadapt.files.store import Store
 
 PLAN_KINDS = ("draft", "feedback", "repair")
 

@@ -16,13 +16,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-from trajadapt.answer import Plan
-from trajadapt.case import Case
 from trajadapt.chain import AdaptationChain
 from trajadapt.errors import SessionStateError, TrajadaptError
+from trajadapt.llm.answer import Plan
+from trajadapt.model.case import Case
+from trajadapt.model.trajectory import Trajectory
 from trajadapt.session import AdaptationResult
 from trajadapt.skills.explain import explain_code
-from trajadapt.trajectory import Trajectory
 
 Status = Literal["working", "ready", "approved", "failed"]
 

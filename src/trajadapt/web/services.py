@@ -11,15 +11,15 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.backends.base import Backend
-from trajadapt.case import Case, load_case
 from trajadapt.chain import AdaptationChain
-from trajadapt.constraints import Constraints
+from trajadapt.checks.constraints import Constraints
+from trajadapt.checks.robot_limits import robot_constraints
 from trajadapt.errors import InputError
+from trajadapt.files.store import SessionSummary, Store
 from trajadapt.memory import MemoryBank
-from trajadapt.robot_limits import robot_constraints
+from trajadapt.model.case import Case, load_case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationResult, SessionSettings
-from trajadapt.store import SessionSummary, Store
 
 
 @dataclass

@@ -8,8 +8,8 @@ from typing import Any
 import numpy as np
 
 from trajadapt.errors import InvalidTrajectory, InvalidWaypoints
-from trajadapt.geometry import extent
-from trajadapt.trajectory import Trajectory
+from trajadapt.model.geometry import extent
+from trajadapt.model.trajectory import Trajectory
 
 JUMP_FACTOR = 3.0
 

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from trajadapt.errors import InputError
+from trajadapt.model.trajectory import finite_float
 from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
-from trajadapt.trajectory import finite_float
 
 NAME_CHARS = 200
 

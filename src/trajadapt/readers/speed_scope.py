@@ -12,26 +12,17 @@ answers in docs/benchmarks.md.
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
-from trajadapt.wording import SENTENCE_MARKS, SPEED_WORDS, longest_names, names_in
+from trajadapt.readers.words import PLACE_WORDS, SPEED_WORDS, clauses, longest_names, names_in
 
-SPEED_STEPS = ("scale_speed", "set_speed")
-PLACE_WORDS = re.compile(
-    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
-    r"|approach\w*|by the|when|while|as you)\b",
-    re.I,
-)
-# unlike wording.CLAUSE_BREAKS, "while" stays inside a clause: in "faster while passing the X" it
-# says where the speed changes
-CLAUSES = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|also)\b", re.I)
+PLACEABLE_SPEED_STEPS = ("scale_speed", "set_speed")  # the speed steps that take near=, radius=, part=
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
     """The one object the one speed clause of ``words`` places the speed change at, if there is one."""
-    speed_clauses = [c for c in CLAUSES.split(words) if SPEED_WORDS.search(c)]
+    speed_clauses = [c for c in clauses(words, keep_while=True) if SPEED_WORDS.search(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
     longest = longest_names(names_in(speed_clauses[0], names))
@@ -60,7 +51,7 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
 def _unplaced_speed_call(line: str) -> tuple[ast.Module, ast.Call] | None:
     """The parsed line and its call for ``t = scale_speed(t, x)`` or ``set_speed`` with no place."""
     found = assigned_call(line)
-    if found is None or found[2] not in SPEED_STEPS:
+    if found is None or found[2] not in PLACEABLE_SPEED_STEPS:
         return None
     tree, call, _ = found
     if len(call.args) > 2 or any(k.arg in ("near", "radius", "part") for k in call.keywords):

@@ -17,8 +17,9 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.readers.words import NUMBER_TEXT
 
-NUMBER = r"((?:\d+\.?\d*|\.\d+))"
+NUMBER = rf"({NUMBER_TEXT})"
 BELOW = r"below|under(?:neath)?|lower than|at most"
 ABOVE = r"above|over|higher than|more than|at least|exceed\w*"
 AT = r"at (?:a |an |the )?(?:height|altitude|elevation)(?: of)?|(?:fly|hover|stay|keep|cruise|move)\w* at"

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.constraints import (
+from trajadapt.checks.constraints import (
     ConstraintMove,
     Constraints,
     Violation,
@@ -32,8 +32,8 @@ from trajadapt.constraints import (
     new_violations,
 )
 from trajadapt.errors import DependencyNotInstalled
-from trajadapt.geometry import Array
-from trajadapt.scene import Scene
+from trajadapt.model.geometry import Array
+from trajadapt.model.scene import Scene
 from trajadapt.skills.objects import avoid, sideways_from
 
 SMOOTHING_WEIGHT = 4.0

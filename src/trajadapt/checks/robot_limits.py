@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from trajadapt.constraints import Constraints, Reach
+from trajadapt.checks.constraints import Constraints, Reach
 from trajadapt.errors import InputError
 
 

@@ -17,44 +17,15 @@ review note says so.
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterable
 
-from trajadapt.answer_grammar import skill_parameters
 from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.llm.answer_grammar import skill_parameters
+from trajadapt.readers.words import intensity_word, is_stated, speed_factor, stated_numbers
 from trajadapt.skills import SKILLS
-from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
-from trajadapt.skills.speed import SPEED_FACTORS
-from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
-UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
 RADII = ("radius",)  # how far a speed change reaches: a number, not an amount word; made up -> the default
-INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
-
-
-NUMBER_WORDS = {
-    "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
-    "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,
-    "half": 0.5, "quarter": 0.25,
-}  # fmt: skip
-
-
-def stated_numbers(words: str) -> list[float]:
-    """Every number in the user's words, also spelled out ('two times', 'twice', 'half')."""
-    spelled = [NUMBER_WORDS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in NUMBER_WORDS]
-    return [abs(float(n)) for n in NUMBER.findall(words)] + spelled
-
-
-def intensity_word(words: str) -> str | None:
-    """The user's vague amount word, if any ('a lot', 'slightly', ...)."""
-    lowered = words.lower()
-    return next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
-
-
-def is_stated(value: float, numbers: list[float]) -> bool:
-    """Whether ``value`` is one of the user's numbers (up to a unit conversion)."""
-    return any(abs(abs(value) - n * f) <= 1e-6 * max(1.0, n * f) for n in numbers for f in UNIT_FACTORS)
 
 
 def is_stated_factor(value: float, numbers: list[float]) -> bool:
@@ -62,21 +33,6 @@ def is_stated_factor(value: float, numbers: list[float]) -> bool:
     candidates = list(numbers) + [1 / n for n in numbers if n] + [1 + n / 100 for n in numbers]
     candidates += [1 - n / 100 for n in numbers if n < 100]
     return any(abs(value - c) <= 1e-6 * max(1.0, c) for c in candidates)
-
-
-def speed_factor(words: str, faster: bool) -> float:
-    """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
-    clause = next((c for c in CLAUSE_BREAKS.split(words) if SPEED_WORDS.search(c)), "")
-    word = intensity_word(clause)
-    strength = AMOUNT_WORDS.get(word or "", AMOUNT_WORDS["default"])
-    size = (
-        "a bit"
-        if strength < AMOUNT_WORDS["default"]
-        else "a lot"
-        if strength > AMOUNT_WORDS["default"]
-        else ""
-    )
-    return SPEED_FACTORS["faster" if faster else "slower"][size]
 
 
 def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:

@@ -33,10 +33,10 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from trajadapt.atomic_files import publish_bytes
 from trajadapt.errors import DependencyNotInstalled, InputError, TrajadaptError
-from trajadapt.recording_limits import check_declared_sizes
-from trajadapt.trajectory import MAX_WAYPOINTS, Trajectory
+from trajadapt.files.atomic_files import publish_bytes
+from trajadapt.files.recording_limits import check_declared_sizes
+from trajadapt.model.trajectory import MAX_WAYPOINTS, Trajectory
 
 Array = npt.NDArray[np.float64]
 BAG_SUFFIXES = (".bag", ".mcap", ".db3")

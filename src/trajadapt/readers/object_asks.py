@@ -35,84 +35,27 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass
 
 from trajadapt.code_parse import (
+    DISTANCE_STEPS,
+    SPEED_STEPS,
     assigned_call,
     call_of,
     detected_name,
     direction_argument,
     in_place_of,
+    objects_of,
+    on_object,
     parse_code,
 )
-from trajadapt.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
-from trajadapt.speed_scope import CLAUSES, PLACE_WORDS
-from trajadapt.unstated_amounts import intensity_word, is_stated, speed_factor, stated_numbers
-from trajadapt.wording import FASTER, SLOWER, asks_pace, longest_names, names_in
-
-CLOSER = re.compile(
-    r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
+from trajadapt.readers.object_words import ObjectAsk, asked_words, object_asks
+from trajadapt.readers.words import (
+    intensity_word,
+    is_stated,
+    names_in,
+    speed_factor,
+    stated_numbers,
 )
-AWAY = re.compile(
-    r"\b(?:away|further|farther|(?:greater|larger|bigger|more|increased?|wider) (?:distance|berth|space))\b",
-    re.I,
-)
-NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
-KEEP_SIDE = re.compile(
-    r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
-)
-WITHIN = re.compile(r"\bwithin\s+((?:\d+\.?\d*|\.\d+))", re.I)
-DISTANCE_STEPS = ("avoid", "move_away", "move_closer")
-SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
-
-
-@dataclass(frozen=True)
-class ObjectAsk:
-    """What one clause asks of one object: 'faster', 'slower', 'closer', 'away' or 'side'."""
-
-    name: str
-    relation: str
-    clause: str
-    side: str = ""  # for 'side': the side to keep to
-    radius: float | None = None  # for a speed change: "within 0.2"
-
-
-def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
-    """The one thing the clauses of ``words`` ask of each object they name (none where two clauses differ)."""
-    asks: dict[str, list[ObjectAsk]] = {}
-    for clause in CLAUSES.split(words):
-        named = longest_names(names_in(clause, names))
-        ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
-        if ask is not None:
-            asks.setdefault(ask.name, []).append(ask)
-    return {name: found[0] for name, found in asks.items() if len({a.relation for a in found}) == 1}
-
-
-def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
-    side = _side(clause.replace(name, " "))
-    if side:
-        return ObjectAsk(name, "side", clause, side=side)
-    if asks_pace(clause):
-        if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
-            return None
-        if CLOSER.search(clause) or AWAY.search(clause):  # "approach the lamp slowly": both, or a place?
-            return None
-        within = WITHIN.search(clause)
-        radius = float(within.group(1)) if within else None
-        return ObjectAsk(name, "faster" if FASTER.search(clause) else "slower", clause, radius=radius)
-    closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
-    if closer == away:
-        return None
-    return ObjectAsk(name, "closer" if closer else "away", clause)
-
-
-def _side(clause: str) -> str:
-    for pattern, flip in ((NOT_SIDE, True), (KEEP_SIDE, False)):
-        found = pattern.search(clause)
-        word = DIRECTION_SYNONYMS.get(found.group(1).lower(), "") if found else ""
-        if word:
-            return OPPOSITE_DIRECTIONS[word] if flip else word
-    return ""
 
 
 def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
@@ -124,7 +67,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     for ask in asks.values():
         if ask.relation in ("faster", "slower") and changes_speed:
             continue
-        steps = [i for i, line in enumerate(lines) if _on_object(call_of(line, DISTANCE_STEPS), ask.name)]
+        steps = [i for i, line in enumerate(lines) if on_object(call_of(line, DISTANCE_STEPS), ask.name)]
         if len(steps) != 1 or (ask.relation == "side" and any(call_of(x, ("keep_side",)) for x in lines)):
             continue
         replaced = _replacement(lines[steps[0]], ask)
@@ -182,17 +125,6 @@ def _sides_of_the_scene(
     return "\n".join(lines), notes
 
 
-def asked_words(ask: ObjectAsk) -> str:
-    """What the ask wants, in words that read before the object's name ('to come closer to')."""
-    return {
-        "faster": "for a faster pace near",
-        "slower": "for a slower pace near",
-        "side": f"to stay {ask.side} of",
-        "closer": "to come closer to",
-        "away": "to keep further from",
-    }[ask.relation]
-
-
 def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     """The lines that replace ``line`` (a distance step on ``ask.name``), or None to keep it."""
     _, call, skill = assigned_call(line)  # type: ignore[misc]
@@ -206,7 +138,7 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     if ask.relation == "side":
         return [f"t = keep_side(t, {ask.side!r}, {point})"]
     wanted = "move_closer" if ask.relation == "closer" else "move_away"
-    if skill == wanted or len(_objects(call)) != 1:
+    if skill == wanted or len(objects_of(call)) != 1:
         return None
     if skill == "avoid" and _clearance_stated(call, ask.clause):
         return None
@@ -215,27 +147,9 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     return [f"t = {wanted}(t, {point}{amount})"]
 
 
-def _objects(call: ast.Call | None) -> list[str]:
-    """The object names of the call's point argument: one ``detect_objects`` or a list of them."""
-    if call is None or len(call.args) < 2:
-        return []
-    point = call.args[1]
-    items = point.elts if isinstance(point, ast.List | ast.Tuple) else [point]
-    return [detected_name(item) or "" for item in items]
-
-
-def step_on_object(line: str, name: str) -> bool:
-    """Whether ``line`` is a distance step (``avoid``, ``move_away``, ``move_closer``) on object ``name``."""
-    return _on_object(call_of(line, DISTANCE_STEPS), name)
-
-
-def _on_object(call: ast.Call | None, name: str) -> bool:
-    return any(found.casefold() == name.casefold() for found in _objects(call))
-
-
 def _without_object(call: ast.Call, name: str) -> str | None:
     """``t = avoid(t, <the other objects>, ...)`` when the avoid names others too; None when only ``name``."""
-    others = [n for n in _objects(call) if n.casefold() != name.casefold()]
+    others = [n for n in objects_of(call) if n.casefold() != name.casefold()]
     if not others:
         return None
     points = [_expression(f"detect_objects({n!r})") for n in others]

@@ -18,9 +18,9 @@ from typing import TypeVar
 
 import numpy as np
 
-from trajadapt.geometry import Array
-from trajadapt.scene import Scene, SceneObject, name_key
-from trajadapt.wording import CLAUSE_BREAKS, names_in
+from trajadapt.model.geometry import Array
+from trajadapt.model.scene import Scene, SceneObject, name_key
+from trajadapt.readers.words import clauses, names_in
 
 _T = TypeVar("_T")
 
@@ -168,7 +168,7 @@ def approached_objects(instruction: str, names: Sequence[str]) -> tuple[str, ...
     ('cup',)
     """
     found = []
-    for clause in CLAUSE_BREAKS.split(instruction):
+    for clause in clauses(instruction):
         if not APPROACH_WORDS.search(clause) or AWAY_WORDS.search(clause):
             continue
         found += names_in(clause, names)

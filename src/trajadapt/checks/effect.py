@@ -18,11 +18,11 @@ from dataclasses import asdict, dataclass
 import numpy as np
 import numpy.typing as npt
 
-from trajadapt.constraints import ConstraintMove
-from trajadapt.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
-from trajadapt.scene import SceneObject
-from trajadapt.trajectory import Trajectory
-from trajadapt.wording import moving_directions
+from trajadapt.checks.constraints import ConstraintMove
+from trajadapt.model.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
+from trajadapt.model.scene import SceneObject
+from trajadapt.model.trajectory import Trajectory
+from trajadapt.readers.words import moving_directions
 
 Array = npt.NDArray[np.float64]
 NEAR_SHARE = 0.25  # the share of waypoints nearest an object whose speed counts as "near" it

@@ -7,9 +7,9 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.errors import InputError
+from trajadapt.model.scene import NAME_CHARS, Scene, parse_objects, parse_text_field
+from trajadapt.model.trajectory import Trajectory, load_trajectory_file, read_json_file
 from trajadapt.safe_text import INSTRUCTION_CHARS, safe_text
-from trajadapt.scene import NAME_CHARS, Scene, parse_objects, parse_text_field
-from trajadapt.trajectory import Trajectory, load_trajectory_file, read_json_file
 
 DESCRIPTION_CHARS = 50_000
 

@@ -4,7 +4,7 @@ A small model writes ``shift(t, 'left')`` for "shift the starting position to th
 path moves, the start stays), ``shift_goal(t, 'back', 1.5)`` or ``move_closer(t,
 detect_objects('goal'))`` for "move backwards by 1.5 after reaching the goal position" (the path
 never goes past its goal), and ``move_away(t, detect_objects('goal'))`` for "the goal position a
-little downwards". Each clause of the user's words (split as ``wording.CLAUSE_BREAKS`` splits them)
+little downwards". Each clause of the user's words (split by ``words.clauses``)
 that names one part of the path and one direction asks for a move of that part:
 
 - the start ("the start", "starting position", "initial point", "beginning") -> ``shift_start``;
@@ -40,10 +40,17 @@ from trajadapt.code_parse import (
     in_place_of,
     parse_code,
 )
-from trajadapt.geometry import OPPOSITE_DIRECTIONS
+from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
+from trajadapt.readers.words import (
+    NUMBER_TEXT,
+    NUMBER_WORDS,
+    SPEED_WORDS,
+    clauses,
+    intensity_word,
+    names_in,
+    said_directions,
+)
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
-from trajadapt.unstated_amounts import NUMBER_WORDS, intensity_word
-from trajadapt.wording import CLAUSE_BREAKS, SPEED_WORDS, names_in, said_directions
 
 AFTER_GOAL = re.compile(
     r"\b(?:after|past|beyond|once)\b(?:\s+\w+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)\b", re.I
@@ -70,7 +77,7 @@ REFERENCE = re.compile(
 FIRST_COUNT = re.compile(r"\bfirst\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
 KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
 FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|keep going|onward\w*)\b", re.I)
-AMOUNT_NUMBER = re.compile(r"\b(?:by|for|of)\s+((?:\d+\.?\d*|\.\d+))\b", re.I)
+AMOUNT_NUMBER = re.compile(rf"\b(?:by|for|of)\s+({NUMBER_TEXT})\b", re.I)
 
 SHIFTS = ("shift", "shift_goal")
 LANDMARK_STEPS = ("move_closer", "move_away")
@@ -105,7 +112,7 @@ class PartMove:
 def part_moves(words: str) -> list[PartMove]:
     """The part moves the clauses of ``words`` ask for (see the module docstring)."""
     moves = []
-    for clause in CLAUSE_BREAKS.split(words):
+    for clause in clauses(words):
         move = _clause_move(clause)
         if move is not None:
             moves.append(move)

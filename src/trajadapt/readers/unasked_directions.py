@@ -21,11 +21,26 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument, in_place_of
-from trajadapt.geometry import PART_WORDS
-from trajadapt.object_asks import SPEED_STEPS, asked_words, object_asks, step_on_object
-from trajadapt.unstated_amounts import intensity_word, speed_factor
-from trajadapt.wording import FASTER, SLOWER, longest_names, said_directions, whole_words
+from trajadapt.code_parse import (
+    SPEED_STEPS,
+    assigned_call,
+    call_of,
+    called_name,
+    direction_argument,
+    in_place_of,
+    step_on_object,
+)
+from trajadapt.model.geometry import PART_WORDS
+from trajadapt.readers.object_words import asked_words, object_asks
+from trajadapt.readers.words import (
+    FASTER,
+    SLOWER,
+    intensity_word,
+    longest_names,
+    said_directions,
+    speed_factor,
+    whole_words,
+)
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
 

@@ -15,10 +15,10 @@ from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from mpl_toolkits.mplot3d import Axes3D  # noqa: E402
 
-from trajadapt.atomic_files import write_bytes_atomic  # noqa: E402
-from trajadapt.geometry import AxisConvention  # noqa: E402
-from trajadapt.scene import Scene, SceneObject  # noqa: E402
-from trajadapt.trajectory import Trajectory  # noqa: E402
+from trajadapt.files.atomic_files import write_bytes_atomic  # noqa: E402
+from trajadapt.model.geometry import AxisConvention  # noqa: E402
+from trajadapt.model.scene import Scene, SceneObject  # noqa: E402
+from trajadapt.model.trajectory import Trajectory  # noqa: E402
 
 ORIGINAL_COLOUR = "tab:blue"
 ADAPTED_COLOUR = "tab:red"

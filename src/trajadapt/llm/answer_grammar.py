@@ -23,8 +23,8 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Annotated, Any
 
-from trajadapt.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Many, Node, Opt, Ref, Some, Upto, alt, seq
-from trajadapt.geometry import DIRECTIONS, PART_WORDS
+from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Many, Node, Opt, Ref, Some, Upto, alt, seq
+from trajadapt.model.geometry import DIRECTIONS, PART_WORDS
 from trajadapt.sandbox.api import GOAL_NAMES, RESULT_VARIABLE, START_NAMES
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS, ArgKind

@@ -1,0 +1,1 @@
+"""The data model: a case (trajectory, scene, instruction), its waypoints and the axis conventions."""

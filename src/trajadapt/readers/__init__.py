@@ -1,0 +1,1 @@
+"""Reading the answer against the user's words (see READERS for the run order)."""

@@ -1,0 +1,96 @@
+"""What the user's words ask of each object they name: come closer, keep away, a side, a pace near it.
+
+Read clause by clause (``words.clauses`` with "while" kept inside); an object that two clauses ask
+different things of is asked nothing. Used by the readers of object steps and of directions.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
+from trajadapt.readers.words import (
+    FASTER,
+    NUMBER_TEXT,
+    PLACE_WORDS,
+    SLOWER,
+    asks_pace,
+    clauses,
+    longest_names,
+    names_in,
+)
+
+CLOSER = re.compile(
+    r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
+)
+AWAY = re.compile(
+    r"\b(?:away|further|farther|(?:greater|larger|bigger|more|increased?|wider) (?:distance|berth|space))\b",
+    re.I,
+)
+NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
+KEEP_SIDE = re.compile(
+    r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
+)
+WITHIN = re.compile(rf"\bwithin\s+({NUMBER_TEXT})", re.I)
+
+
+@dataclass(frozen=True)
+class ObjectAsk:
+    """What one clause asks of one object: 'faster', 'slower', 'closer', 'away' or 'side'."""
+
+    name: str
+    relation: str
+    clause: str
+    side: str = ""  # for 'side': the side to keep to
+    radius: float | None = None  # for a speed change: "within 0.2"
+
+
+def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
+    """The one thing the clauses of ``words`` ask of each object they name (none where two clauses differ)."""
+    asks: dict[str, list[ObjectAsk]] = {}
+    for clause in clauses(words, keep_while=True):
+        named = longest_names(names_in(clause, names))
+        ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
+        if ask is not None:
+            asks.setdefault(ask.name, []).append(ask)
+    return {name: found[0] for name, found in asks.items() if len({a.relation for a in found}) == 1}
+
+
+def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
+    side = _side(clause.replace(name, " "))
+    if side:
+        return ObjectAsk(name, "side", clause, side=side)
+    if asks_pace(clause):
+        if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
+            return None
+        if CLOSER.search(clause) or AWAY.search(clause):  # "approach the lamp slowly": both, or a place?
+            return None
+        within = WITHIN.search(clause)
+        radius = float(within.group(1)) if within else None
+        return ObjectAsk(name, "faster" if FASTER.search(clause) else "slower", clause, radius=radius)
+    closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
+    if closer == away:
+        return None
+    return ObjectAsk(name, "closer" if closer else "away", clause)
+
+
+def _side(clause: str) -> str:
+    for pattern, flip in ((NOT_SIDE, True), (KEEP_SIDE, False)):
+        found = pattern.search(clause)
+        word = DIRECTION_SYNONYMS.get(found.group(1).lower(), "") if found else ""
+        if word:
+            return OPPOSITE_DIRECTIONS[word] if flip else word
+    return ""
+
+
+def asked_words(ask: ObjectAsk) -> str:
+    """What the ask wants, in words that read before the object's name ('to come closer to')."""
+    return {
+        "faster": "for a faster pace near",
+        "slower": "for a slower pace near",
+        "side": f"to stay {ask.side} of",
+        "closer": "to come closer to",
+        "away": "to keep further from",
+    }[ask.relation]

@@ -1,0 +1,152 @@
+"""How the user's words are read without a model: clauses, speed words, numbers, object names.
+
+Every reader of the answer (``trajadapt.readers``), the clearance's exemptions
+(``checks.constraints``) and the effect's flags (``checks.effect``) read instructions with these
+helpers, so that one clause splitter, one number reading and one vocabulary serve them all.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+from trajadapt.model.geometry import DIRECTION_SYNONYMS
+from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
+from trajadapt.skills.speed import SPEED_FACTORS
+
+NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
+"""A number as the user writes it ("2", "0.2", ".5"); readers put it in their own phrases."""
+
+SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
+"""Punctuation that ends a clause; the point of a decimal number ("by 0.2") does not."""
+
+CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I)
+"""Where one clause of an instruction ends and the next begins."""
+
+CLAUSE_BREAKS_KEEPING_WHILE = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|also)\b", re.I)
+"""The same, except that "while" stays inside a clause: in "faster while passing the X" it says where
+the speed changes (the readers of speed and of objects split so)."""
+
+
+def clauses(words: str, keep_while: bool = False) -> list[str]:
+    """The clauses of ``words``, split at punctuation, "and", "then", "but" and "while".
+
+    With ``keep_while``, "while" stays inside a clause and "also" splits instead.
+    """
+    return (CLAUSE_BREAKS_KEEPING_WHILE if keep_while else CLAUSE_BREAKS).split(words)
+
+
+PLACE_WORDS = re.compile(
+    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
+    r"|approach\w*|by the|when|while|as you)\b",
+    re.I,
+)
+"""Words that say where along the path something happens ("near the lamp", "while passing")."""
+
+SPEED_WORDS = re.compile(r"\b(?:fast|slow|quick|speed|velocit|pace|hurr|rapid|swift|brisk|leisure)", re.I)
+"""Word stems that make a clause about speed."""
+
+PATH_WORDS = re.compile(
+    r"\b(?:distance|clear|avoid|away|reach|pass|through|between|around|circle|spiral|loop|extend|continu"
+    r"|further|farther|closer|nearer|approach|shift|curv|bend|arc|zig|weav|smooth|height|altitude|above"
+    r"|below|over|under|rotat|turn|tilt|scale|waypoint|side|towards?|hug|bow|offset)\w*",
+    re.I,
+)
+"""Word stems that ask where the path goes (its place or shape), not how fast."""
+
+
+PACE_PHRASES = re.compile(
+    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b", re.I
+)
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up")."""
+
+
+def moving_directions(words: str) -> set[str]:
+    """The directions the words ask the path to move in: ``said_directions`` less "slow down"'s."""
+    return said_directions(PACE_PHRASES.sub(" slow ", words))
+
+
+def asked_kinds(words: str) -> frozenset[str]:
+    """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
+    kinds = {"pace"} if asks_pace(words) else set()
+    if PATH_WORDS.search(words) or moving_directions(words):
+        kinds.add("place")
+    return frozenset(kinds)
+
+
+FASTER = re.compile(
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed up)\b", re.I
+)
+SLOWER = re.compile(r"\b(?:slow\w*|decelerat\w*|leisure\w*)\b", re.I)
+"""Word stems that ask for more speed, and for less."""
+
+
+def whole_words(text: str) -> str:
+    """Lower-case words with a space on each side, so that names match whole words only.
+
+    >>> whole_words("the Red-Box!")
+    ' the red box '
+    """
+    return f" {' '.join(re.findall(r'[a-z0-9]+', text.casefold()))} "
+
+
+def names_in(text: str, names: Iterable[str]) -> list[str]:
+    """The names that ``text`` contains as whole words, in the order of ``names``."""
+    words = whole_words(text)
+    return [name for name in names if name and whole_words(name) in words]
+
+
+def said_directions(words: str) -> set[str]:
+    """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back')."""
+    return {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}
+
+
+def longest_names(named: list[str]) -> list[str]:
+    """The names not inside another of them ('red box' and 'box' found: 'red box')."""
+    return [n for n in named if not any(n != o and n.casefold() in o.casefold() for o in named)]
+
+
+def asks_pace(words: str) -> bool:
+    """Whether the words ask about speed: a speed word, or one that asks for more or less of it."""
+    return bool(SPEED_WORDS.search(words) or FASTER.search(words) or SLOWER.search(words))
+
+
+NUMBER_WORDS = {
+    "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
+    "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,
+    "half": 0.5, "quarter": 0.25,
+}  # fmt: skip
+UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
+INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
+
+
+def stated_numbers(words: str) -> list[float]:
+    """Every number in the user's words, also spelled out ('two times', 'twice', 'half')."""
+    spelled = [NUMBER_WORDS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in NUMBER_WORDS]
+    return [abs(float(n)) for n in NUMBER.findall(words)] + spelled
+
+
+def intensity_word(words: str) -> str | None:
+    """The user's vague amount word, if any ('a lot', 'slightly', ...)."""
+    lowered = words.lower()
+    return next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
+
+
+def is_stated(value: float, numbers: list[float]) -> bool:
+    """Whether ``value`` is one of the user's numbers (up to a unit conversion)."""
+    return any(abs(abs(value) - n * f) <= 1e-6 * max(1.0, n * f) for n in numbers for f in UNIT_FACTORS)
+
+
+def speed_factor(words: str, faster: bool) -> float:
+    """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
+    clause = next((c for c in clauses(words) if SPEED_WORDS.search(c)), "")
+    word = intensity_word(clause)
+    strength = AMOUNT_WORDS.get(word or "", AMOUNT_WORDS["default"])
+    size = (
+        "a bit"
+        if strength < AMOUNT_WORDS["default"]
+        else "a lot"
+        if strength > AMOUNT_WORDS["default"]
+        else ""
+    )
+    return SPEED_FACTORS["faster" if faster else "slower"][size]

@@ -80,3 +80,25 @@ def test_the_foundation_imports_only_the_foundation() -> None:
 def test_the_top_level_holds_few_modules_and_the_rest_are_packages() -> None:
     modules = sorted(path.name for path in PACKAGE.glob("*.py"))
     assert len(modules) <= MAX_TOP_LEVEL_MODULES, modules
+
+
+def test_no_reader_imports_another_reader() -> None:
+    from trajadapt.readers import READERS
+
+    helpers = {"trajadapt.readers.words", "trajadapt.readers.object_words", "trajadapt.readers"}
+    reader_modules = {reader.read.__module__ for reader in READERS} - {"trajadapt.readers"}
+    folder = PACKAGE / "readers"
+    modules = {f"trajadapt.readers.{path.stem}" for path in folder.glob("*.py") if path.stem != "__init__"}
+    assert len(modules - helpers) == len(READERS)
+    for module in modules - helpers:
+        found = imported(folder / f"{module.rsplit('.', 1)[1]}.py")
+        assert not {m for m in found if m.startswith("trajadapt.readers")} - helpers, module
+    assert reader_modules <= modules
+
+
+def test_only_the_readers_package_lists_the_readers() -> None:
+    for path in PACKAGE.rglob("*.py"):
+        if path.parent.name == "readers":
+            continue
+        text = path.read_text(encoding="utf-8")
+        assert "replace_unstated_amounts" not in text and "leave_out_unasked(" not in text, path

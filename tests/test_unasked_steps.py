@@ -73,7 +73,7 @@ def test_the_session_leaves_the_step_out_and_says_so(simple_case: Case, sandbox:
         assert ("extend" in session.draft().code) is not leave_out
         result = session.approve()
         assert result.trajectory is not None and len(result.trajectory) == expected_length
-        assert any(n.code == "left-out" for n in result.notes) is leave_out
+        assert any(n.code == "unasked-steps" for n in result.notes) is leave_out
 
 
 @pytest.mark.parametrize(

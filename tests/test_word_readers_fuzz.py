@@ -12,14 +12,7 @@ import ast
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from trajadapt.readers.height_asks import relate_heights
-from trajadapt.readers.object_asks import replace_object_steps
-from trajadapt.readers.part_scope import scope_to_parts
-from trajadapt.readers.speed_scope import localize_speed
-from trajadapt.readers.stated_amounts import use_stated_amounts
-from trajadapt.readers.unasked_directions import replace_unasked_shifts
-from trajadapt.readers.unasked_steps import leave_out_unasked
-from trajadapt.readers.unstated_amounts import replace_unstated_amounts
+from trajadapt.readers import READERS, read_against_words
 
 NAMES = ["box", "red box", "Lamp", "goal"]
 FRAGMENTS = [
@@ -53,20 +46,12 @@ code = st.lists(st.sampled_from(STEPS), max_size=6).map(
 @given(words, code)
 def test_the_readers_never_fail_and_leave_valid_code(instruction: str, written: str) -> None:
     asked = [instruction]
-    result, notes = leave_out_unasked(written, asked, NAMES)
-    for reader in (
-        lambda c: replace_unstated_amounts(c, asked),
-        lambda c: use_stated_amounts(c, asked),
-        lambda c: relate_heights(c, asked),
-        lambda c: scope_to_parts(c, asked),
-        lambda c: replace_object_steps(c, asked, NAMES),
-        lambda c: replace_unasked_shifts(c, asked, NAMES),
-        lambda c: localize_speed(c, asked, NAMES),
-    ):
+    result = written
+    for reader in READERS:
         before = result
-        result, more = reader(result)
-        assert (result == before) == (not more)
-        notes += more
+        result, more = reader.read(result, asked, NAMES)
+        assert (result == before) == (not more), reader.name
+    assert read_against_words(written, asked, NAMES)[0] == result
     ast.parse(result)
     lines = result.splitlines()
     assert lines[0] == "t = get_trajectory()" and lines[-1] == "modified_trajectory = t"

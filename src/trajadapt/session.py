@@ -39,14 +39,7 @@ from trajadapt.model.case import Case
 from trajadapt.model.geometry import AXIS_CONVENTIONS, AxisConvention
 from trajadapt.model.trajectory import Trajectory
 from trajadapt.prompts import first_messages, render
-from trajadapt.readers.height_asks import relate_heights
-from trajadapt.readers.object_asks import replace_object_steps
-from trajadapt.readers.part_scope import scope_to_parts
-from trajadapt.readers.speed_scope import localize_speed
-from trajadapt.readers.stated_amounts import use_stated_amounts
-from trajadapt.readers.unasked_directions import replace_unasked_shifts
-from trajadapt.readers.unasked_steps import leave_out_unasked
-from trajadapt.readers.unstated_amounts import replace_unstated_amounts
+from trajadapt.readers import ReaderNote, read_against_words
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox, SandboxResult
@@ -163,7 +156,7 @@ class Checkpoint:
     turns: int
     plan: Plan
     asked: tuple[str, ...]
-    left_out: tuple[str, ...]
+    left_out: tuple[ReaderNote, ...]
 
 
 @dataclass(frozen=True)
@@ -365,7 +358,7 @@ class AdaptationSession:
         self._last_notes: tuple[str, ...] = ()
         self._last_moves: tuple[ConstraintMove, ...] = ()
         self._asked: list[str] = [case.instruction]  # the user's words: instruction, then feedback
-        self._left_out: list[str] = []  # notes on steps left out of the current plan
+        self._left_out: list[ReaderNote] = []  # what the readers changed in the current plan
         self._model_explanations: dict[str, Explanation] = {}
         self._started = time.perf_counter()
         self._checkpoints: list[Checkpoint] = []  # right after each plan
@@ -429,12 +422,16 @@ class AdaptationSession:
             second = None
         again = self._clause_findings(self.turns[-1], clauses) if second is not None else None
         if second is not None and again is not None and _count(again) < _count(first):
-            self._left_out.append(f"a step contradicted its words ({problems[2:]}); asked once more")
+            self._left_out.append(
+                ReaderNote("clause-check", f"a step contradicted its words ({problems[2:]}); asked once more")
+            )
             return second
         self._rewind_to(kept)
         self._left_out = [
             *self._left_out,
-            f"a step contradicts its words ({problems[2:]}); asked once more, no better",
+            ReaderNote(
+                "clause-check", f"a step contradicts its words ({problems[2:]}); asked once more, no better"
+            ),
         ]
         return plan
 
@@ -619,7 +616,7 @@ class AdaptationSession:
             completion = self._complete(first)
             self.messages.append(ChatMessage("assistant", completion.text))
             try:
-                plan = self._without_unasked_steps(parse_answer(completion.text))
+                plan = self._read_against_words(parse_answer(completion.text))
             except AnswerParseError as exc:
                 self._record(Turn(kind, user_text, None, completion, str(exc)))
                 if retry >= self.settings.format_retries:
@@ -638,25 +635,18 @@ class AdaptationSession:
             return plan
         raise AssertionError("unreachable")
 
-    def _without_unasked_steps(self, plan: Plan) -> Plan:
-        """The plan without skill steps and distances the user's words do not ask for (skills mode), noted."""
+    def _read_against_words(self, plan: Plan) -> Plan:
+        """The plan after the readers of ``trajadapt.readers`` (skills mode), their changes noted."""
         self._left_out = []
         if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
             return plan
         approved = next((e for e in self.recalled_examples if _same_program(e.code, plan.code)), None)
         if approved is not None:  # the user's own approved program for a request like this one
-            self._left_out = [f"the program of remembered example {approved.remembered}, kept as approved"]
+            kept = f"the program of remembered example {approved.remembered}, kept as approved"
+            self._left_out = [ReaderNote("memory", kept)]
             return plan
         names = [obj.name for obj in self.case.scene.objects]
-        code, left_out = leave_out_unasked(plan.code, self._asked, names)
-        code, replaced = replace_unstated_amounts(code, self._asked)
-        code, restored = use_stated_amounts(code, self._asked)
-        code, heights = relate_heights(code, self._asked)
-        code, scoped = scope_to_parts(code, self._asked)
-        code, reread = replace_object_steps(code, self._asked, names)
-        code, guessed = replace_unasked_shifts(code, self._asked, names)
-        code, placed = localize_speed(code, self._asked, names)
-        self._left_out = left_out + replaced + restored + heights + scoped + reread + guessed + placed
+        code, self._left_out = read_against_words(plan.code, self._asked, names)
         return replace(plan, code=code) if self._left_out else plan
 
     def _findings_alone(self, clause: str, lines: tuple[str, ...]) -> list[str]:
@@ -825,7 +815,7 @@ class AdaptationSession:
     def _notes(self, trajectory: Trajectory | None) -> tuple[ReviewNote, ...]:
         if trajectory is None:
             return ()
-        sandbox_notes = tuple(ReviewNote("left-out", note) for note in self._left_out)
+        sandbox_notes = tuple(ReviewNote(note.reader, note.message) for note in self._left_out)
         sandbox_notes += tuple(ReviewNote("sandbox", note) for note in self._last_notes)
         return sandbox_notes + tuple(review_notes(self.case.trajectory, trajectory))
 

@@ -1,1 +1,75 @@
-"""Reading the answer against the user's words (see READERS for the run order)."""
+"""Reading the answer against the user's words: one stage, its readers in ``READERS`` order.
+
+A small model's skill program often does something its words did not ask: a step nobody asked for,
+a made-up amount, a shift in a direction nobody said, a speed change for the whole path that the
+words tie to one object. Each reader looks at the program and the user's words (the instruction and
+any feedback) and changes the lines that contradict them, with a note that says what and why.
+``read_against_words`` runs them all in order; the session, the tests and the replay tool call it.
+
+Readers share the word helpers of ``readers.words`` and ``readers.object_words`` and the code helpers
+of ``trajadapt.code_parse``; no reader imports another. To add one: write a module here with a
+function ``(code, asked, names) -> (code, notes)`` and put it in ``READERS`` where it must run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.object_asks import replace_object_steps
+from trajadapt.readers.part_scope import scope_to_parts
+from trajadapt.readers.speed_scope import localize_speed
+from trajadapt.readers.stated_amounts import use_stated_amounts
+from trajadapt.readers.unasked_directions import replace_unasked_shifts
+from trajadapt.readers.unasked_steps import leave_out_unasked
+from trajadapt.readers.unstated_amounts import replace_unstated_amounts
+
+ReadFunction = Callable[[str, Sequence[str], Sequence[str]], tuple[str, list[str]]]
+
+
+@dataclass(frozen=True)
+class Reader:
+    """One reader: its name (on its notes), what it reads, and the function that does it."""
+
+    name: str
+    reads: str
+    read: ReadFunction
+
+
+@dataclass(frozen=True)
+class ReaderNote:
+    """A change a reader made, in words, and which reader made it."""
+
+    reader: str
+    message: str
+
+
+READERS: tuple[Reader, ...] = (
+    Reader("unasked-steps", "steps of a topic the words never mention", leave_out_unasked),
+    Reader("unstated-amounts", "amounts the words never give",
+           lambda code, asked, _: replace_unstated_amounts(code, asked)),
+    Reader("stated-amounts", "a clause's one direction and amount, used as said",
+           lambda code, asked, _: use_stated_amounts(code, asked)),
+    Reader("height-asks", "heights said as a limit or a level",
+           lambda code, asked, _: relate_heights(code, asked)),
+    Reader("part-scope", "the part of the path a clause moves",
+           lambda code, asked, _: scope_to_parts(code, asked)),
+    Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
+    Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
+    Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
+)  # fmt: skip
+"""The stage's readers in run order; nothing else lists them."""
+
+
+def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) -> tuple[str, list[ReaderNote]]:
+    """``code`` after every reader in ``READERS`` order, and each change as a note naming its reader.
+
+    ``asked`` holds the user's words (the instruction, then each feedback); ``names`` the scene's
+    object names.
+    """
+    notes: list[ReaderNote] = []
+    for reader in READERS:
+        code, found = reader.read(code, asked, names)
+        notes += [ReaderNote(reader.name, message) for message in found]
+    return code, notes

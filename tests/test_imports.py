@@ -102,3 +102,17 @@ def test_only_the_readers_package_lists_the_readers() -> None:
             continue
         text = path.read_text(encoding="utf-8")
         assert "replace_unstated_amounts" not in text and "leave_out_unasked(" not in text, path
+
+
+def test_no_module_is_longer_than_a_reader_can_hold() -> None:
+    long = {
+        str(p.relative_to(PACKAGE)): n
+        for p in PACKAGE.rglob("*.py")
+        if (n := len(p.read_text().splitlines())) > 400
+    }
+    assert long == {}
+
+
+def test_no_session_result_travels_through_an_attribute() -> None:
+    for path in (PACKAGE / "session").glob("*.py"):
+        assert "self._last_" not in path.read_text(), path

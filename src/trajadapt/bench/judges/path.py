@@ -1,93 +1,20 @@
-"""Expectation checks: does an adapted trajectory do what the instruction asked?
-
-Each check is a pure function ``(original, adapted, scene, params, axes) -> Verdict``. Vague words are
-judged leniently (any real change in the asked direction counts); numbers are judged strictly (within
-a tolerance). Trajectories are (N, 4) arrays; the two may have different lengths.
-"""
+"""Checks of where the path goes: shifts, distances, ends, loops, heights, sides, shape."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from trajadapt.model.geometry import Array, Axes, extent, progress
-
-REAL_CHANGE = 0.02  # of the original's size: smaller moves do not count as a change
-NEAR_FRACTION = 0.25  # the share of waypoints nearest an object that count as "near" it
-
-
-@dataclass(frozen=True)
-class Verdict:
-    """The outcome of one check, with the measured numbers in words."""
-
-    kind: str
-    passed: bool
-    detail: str
-
-
-@dataclass(frozen=True)
-class CheckContext:
-    """What a check looks at."""
-
-    original: Array
-    adapted: Array
-    objects: dict[str, Array]
-    axes: Axes
-
-    @property
-    def size(self) -> float:
-        """The original's largest bounding-box side."""
-        return extent(self.original)
-
-    def point(self, params: dict[str, Any]) -> Array:
-        """The position named by ``object`` (or a midpoint of ``objects``, or an explicit ``point``)."""
-        if "point" in params:
-            return np.asarray(params["point"], dtype=np.float64)
-        names = params.get("objects") or [params["object"]]
-        centre: Array = np.mean([self.objects[str(name).strip().casefold()] for name in names], axis=0)
-        return centre
-
-
-CheckFunction = Callable[[CheckContext, dict[str, Any]], tuple[bool, str]]
-CHECKS: dict[str, CheckFunction] = {}
-
-
-def check(kind: str) -> Callable[[CheckFunction], CheckFunction]:
-    """Register a check function under ``kind``."""
-
-    def register(function: CheckFunction) -> CheckFunction:
-        CHECKS[kind] = function
-        return function
-
-    return register
-
-
-def run_check(context: CheckContext, spec: dict[str, Any]) -> Verdict:
-    """Run one expectation ``{"kind": ..., **params}``; an unknown kind or bad parameter fails loudly.
-
-    Raises:
-        KeyError: the kind is not registered.
-    """
-    kind = spec["kind"]
-    passed, detail = CHECKS[kind](context, {k: v for k, v in spec.items() if k != "kind"})
-    return Verdict(kind, bool(passed), detail)
-
-
-def _distances(points: Array, target: Array) -> Array:
-    return np.asarray(np.linalg.norm(points[:, :3] - target, axis=1))
-
-
-def _near_mean(trajectory: Array, target: Array) -> float:
-    distances = np.sort(_distances(trajectory, target))
-    return float(distances[: max(2, int(NEAR_FRACTION * len(distances)))].mean())
-
-
-def _at_progress(trajectory: Array, fractions: Array) -> Array:
-    s = progress(trajectory)
-    return np.stack([np.interp(fractions, s, trajectory[:, k]) for k in range(4)], axis=1)
+from trajadapt.bench.judges.core import (
+    REAL_CHANGE,
+    CheckContext,
+    at_progress,
+    check,
+    distances_to,
+    near_mean,
+)
+from trajadapt.model.geometry import Array, progress
 
 
 @check("shift")
@@ -99,8 +26,8 @@ def _shift(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
         part
     ]
     before, after = (
-        _at_progress(ctx.original, np.asarray(fractions)),
-        _at_progress(ctx.adapted, np.asarray(fractions)),
+        at_progress(ctx.original, np.asarray(fractions)),
+        at_progress(ctx.adapted, np.asarray(fractions)),
     )
     along = float(np.median((after[:, :3] - before[:, :3]) @ direction))
     if "amount" in p:
@@ -135,11 +62,11 @@ def _distance(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
         count = int(p["first"])
         ctx = CheckContext(ctx.original[:count], ctx.adapted[:count], ctx.objects, ctx.axes)
     if relation == "at_least":
-        closest = float(_distances(ctx.adapted, target).min())
+        closest = float(distances_to(ctx.adapted, target).min())
         return closest >= float(p["value"]) * (
             1 - float(p.get("tolerance", 0.02))
         ), f"closest {closest:.3g} (asked >= {p['value']})"
-    before, after = _near_mean(ctx.original, target), _near_mean(ctx.adapted, target)
+    before, after = near_mean(ctx.original, target), near_mean(ctx.adapted, target)
     change = after - before
     needed = REAL_CHANGE * ctx.size
     if relation == "decreased":
@@ -154,7 +81,7 @@ def _distance(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 @check("passes_near")
 def _passes_near(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
     """The path comes within tolerance (fraction of the size) of a point or object."""
-    closest = float(_distances(ctx.adapted, ctx.point(p)).min())
+    closest = float(distances_to(ctx.adapted, ctx.point(p)).min())
     limit = float(p.get("tolerance", 0.05)) * ctx.size
     return closest <= limit, f"closest {closest:.3g} (needs <= {limit:.3g})"
 
@@ -163,95 +90,18 @@ def _passes_near(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
 def _ends_near(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
     """The path ends at the point of the original nearest to the object (or within tolerance of it)."""
     target = ctx.point(p)
-    nearest = ctx.original[int(np.argmin(_distances(ctx.original, target))), :3]
+    nearest = ctx.original[int(np.argmin(distances_to(ctx.original, target))), :3]
     gap = float(np.linalg.norm(ctx.adapted[-1, :3] - (target if p.get("at_object") else nearest)))
     limit = float(p.get("tolerance", 0.05)) * ctx.size
     stopped = not p.get("stopped", False) or ctx.adapted[-1, 3] <= 1e-6
     return gap <= limit and stopped, f"ends {gap:.3g} from the target, final speed {ctx.adapted[-1, 3]:.3g}"
 
 
-def _speed_near(trajectory: Array, target: Array, radius: float | None = None) -> tuple[float, float]:
-    """Mean speed of the waypoints near the target (within radius, or the nearest quarter) and of the rest."""
-    distances = _distances(trajectory, target)
-    if radius is not None and (distances <= radius).any():
-        near, far = np.flatnonzero(distances <= radius), np.flatnonzero(distances > radius)
-    else:
-        order = np.argsort(distances)
-        count = max(2, int(NEAR_FRACTION * len(trajectory)))
-        near, far = order[:count], order[count:]
-    return float(trajectory[near, 3].mean()), float(trajectory[far, 3].mean()) if far.size else 0.0
-
-
-@check("speed_near")
-def _speed_near_check(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """Speed near an object is 'lower' / 'higher' (by factor if given) or 'equal' value; elsewhere kept."""
-    target = ctx.point(p)
-    radius = float(p["radius"]) if "radius" in p else None
-    near_before, far_before = _speed_near(ctx.original, target, radius)
-    near_after, far_after = _speed_near(ctx.adapted, target, radius)
-    ok, detail = _compare_speed(p, near_before, near_after)
-    if p.get("elsewhere_kept", True) and far_before > 0:
-        kept = abs(far_after - far_before) <= 0.15 * far_before + 0.25 * abs(near_after - near_before)
-        ok = ok and kept
-        detail += f"; elsewhere {far_before:.3g} -> {far_after:.3g}"
-    return ok, "near: " + detail
-
-
-@check("speed")
-def _speed(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """Mean speed over the path (or a 'part': start/middle/end) is lower / higher / equal to a value."""
-    part = p.get("part")
-    bounds = {"start": (0.0, 0.3), "middle": (0.3, 0.7), "end": (0.7, 1.0), None: (0.0, 1.0)}[part]
-
-    def mean_speed(t: Array) -> float:
-        s = progress(t)
-        return float(t[(s >= bounds[0]) & (s <= bounds[1]), 3].mean())
-
-    return _compare_speed(p, mean_speed(ctx.original), mean_speed(ctx.adapted))
-
-
-def _compare_speed(p: dict[str, Any], before: float, after: float) -> tuple[bool, str]:
-    relation = p["relation"]
-    detail = f"speed {before:.3g} -> {after:.3g}"
-    if relation == "lower":
-        return after < before * (1 - float(p.get("by", 0.05))), detail
-    if relation == "higher":
-        return after > before * (1 + float(p.get("by", 0.05))), detail
-    if relation == "equal":
-        value = float(p["value"])
-        return abs(after - value) <= float(p.get("tolerance", 0.1)) * max(
-            value, 1e-9
-        ), detail + f" (asked {value})"
-    raise ValueError(f"unknown speed relation {relation!r}")
-
-
-@check("constant_speed")
-def _constant_speed(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """All (moving) waypoints at one speed, the given value if any."""
-    speeds = ctx.adapted[1:-1, 3]
-    spread = float(np.ptp(speeds))
-    value = p.get("value")
-    ok = spread <= 0.05 * max(float(speeds.mean()), 1e-9)
-    if value is not None:
-        ok = ok and abs(float(np.median(speeds)) - float(value)) <= 0.1 * float(value)
-    return ok, f"speeds {speeds.min():.3g}..{speeds.max():.3g}"
-
-
-@check("decelerates")
-def _decelerates(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """Speed falls towards the goal: the last part is slower than before, ending near 'final' if given."""
-    tail = ctx.adapted[progress(ctx.adapted) >= float(p.get("after", 0.6)), 3]
-    falling = bool(np.all(np.diff(tail) <= 1e-9)) and tail[-1] < tail[0]
-    final = p.get("final")
-    ok = falling and (final is None or abs(tail[-1] - float(final)) <= 0.05 * max(tail[0], 1e-9))
-    return ok, f"last part speeds {tail[0]:.3g} -> {tail[-1]:.3g}"
-
-
 @check("extends")
 def _extends(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
     """The path goes on past the original goal, by at least 'distance' if given (or a real amount)."""
     gap = float(np.linalg.norm(ctx.adapted[-1, :3] - ctx.original[-1, :3]))
-    passes_goal = float(_distances(ctx.adapted, ctx.original[-1, :3]).min()) <= 0.05 * ctx.size
+    passes_goal = float(distances_to(ctx.adapted, ctx.original[-1, :3]).min()) <= 0.05 * ctx.size
     needed = float(p.get("distance", REAL_CHANGE * 5 * ctx.size)) * (1 - float(p.get("tolerance", 0.2)))
     ok = passes_goal and gap >= needed
     if "direction" in p:
@@ -287,26 +137,6 @@ def _waypoints(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
         relation
     ]
     return ok, f"{before} -> {after} waypoints"
-
-
-@check("pause")
-def _pause(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
-    """The robot stands still (repeated position, speed 0) for 'steps' waypoints, near 'object' if given."""
-    still = (np.linalg.norm(np.diff(ctx.adapted[:, :3], axis=0), axis=1) <= 1e-9 * ctx.size) & (
-        ctx.adapted[1:, 3] <= 1e-9
-    )
-    longest, run, end = 0, 0, 0
-    for index, flag in enumerate(still):
-        run = run + 1 if flag else 0
-        if run > longest:
-            longest, end = run, index + 1
-    ok = longest >= int(p["steps"])
-    if ok and "object" in p:
-        ok = (
-            float(np.linalg.norm(ctx.adapted[end, :3] - ctx.point(p)))
-            <= 1.5 * float(_distances(ctx.original, ctx.point(p)).min()) + 0.05 * ctx.size
-        )
-    return ok, f"longest stop {longest} steps (asked {p['steps']})"
 
 
 @check("height")
@@ -346,7 +176,7 @@ def _zigzag(ctx: CheckContext, p: dict[str, Any]) -> tuple[bool, str]:
         before, after = ctx.original[:, :3], ctx.adapted[:, :3]
     else:
         s = np.linspace(0.0, 1.0, 200)
-        before, after = _at_progress(ctx.original, s)[:, :3], _at_progress(ctx.adapted, s)[:, :3]
+        before, after = at_progress(ctx.original, s)[:, :3], at_progress(ctx.adapted, s)[:, :3]
     across = np.cross(np.gradient(before, axis=0), ctx.axes.vector("up"))
     across /= np.maximum(np.linalg.norm(across, axis=1, keepdims=True), 1e-12)
     lateral = np.sum((after - before) * across, axis=1)

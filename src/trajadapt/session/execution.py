@@ -1,0 +1,107 @@
+"""Running a plan's code: the sandbox, then the result checked and held to the constraints.
+
+``execute`` returns one ``Execution`` record (the outcome, what the code printed, the sandbox's and
+the projection's notes, how far the projection moved waypoints), so a session keeps the record of
+the result it keeps and drops the others whole.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from trajadapt.checks.constraints import ConstraintMove, constraints_for, new_violations
+from trajadapt.checks.projection import project
+from trajadapt.checks.review import validate_result
+from trajadapt.checks.robot_limits import robot_constraints
+from trajadapt.errors import CodeRejected, DependencyNotInstalled, InvalidTrajectory
+from trajadapt.model.case import Case
+from trajadapt.model.trajectory import Trajectory
+from trajadapt.sandbox.runner import ExecutionOptions, Sandbox
+from trajadapt.sandbox.skill_program import check_skill_program
+from trajadapt.session.records import Failure, Outcome
+from trajadapt.session.settings import SessionSettings
+
+
+@dataclass(frozen=True)
+class Execution:
+    """One run of a plan's code and what came of it."""
+
+    outcome: Outcome
+    stdout: str = ""
+    notes: tuple[str, ...] = ()
+    moves: tuple[ConstraintMove, ...] = ()
+    seconds: float = 0.0
+    layers: tuple[str, ...] = ()
+    refused: bool = False  # the code was not a skill program and never ran
+
+    @property
+    def trajectory(self) -> Trajectory | None:
+        """The result when the code gave one that keeps the constraints."""
+        return self.outcome if isinstance(self.outcome, Trajectory) else None
+
+
+def execute(
+    code: str,
+    case: Case,
+    sandbox: Sandbox,
+    settings: SessionSettings,
+    asked: Sequence[str],
+    held_to_grammar: bool,
+) -> Execution:
+    """Run ``code`` on the case and check its result; ``asked`` are the user's words so far.
+
+    ``held_to_grammar``: the answer was written under the skills grammar, so code that is not a skill
+    program is refused before it runs (a server may ignore the grammar it was sent).
+    """
+    if held_to_grammar:
+        try:
+            check_skill_program(code)
+        except CodeRejected as exc:
+            message = f"{exc} (the answer must be a program of skill calls)"
+            return Execution(Failure.of("CodeRejected", message), refused=True)
+    skills = settings.mode == "skills"
+    options = ExecutionOptions(skills=skills, positive_x=settings.axes.positive_x, accept_last=skills)
+    result = sandbox.run(code, case.trajectory, case.scene, options)
+    ran = Execution(Failure("NoResult", "the code produced no trajectory"), result.stdout, result.notes,
+                    seconds=result.duration_s, layers=tuple(result.layers))  # fmt: skip
+    if result.error is not None:
+        return _with(ran, Failure(result.error.type, result.error.describe()))
+    if result.rows is None:
+        return ran
+    try:
+        trajectory = validate_result(result.rows)
+    except InvalidTrajectory as exc:
+        return _with(ran, Failure.of("InvalidTrajectory", str(exc)))
+    return held_to_constraints(ran, trajectory, case, settings, " ".join(asked))
+
+
+def _with(execution: Execution, outcome: Outcome) -> Execution:
+    return Execution(outcome, execution.stdout, execution.notes, execution.moves, execution.seconds,
+                     execution.layers)  # fmt: skip
+
+
+def held_to_constraints(
+    ran: Execution, trajectory: Trajectory, case: Case, settings: SessionSettings, asked: str
+) -> Execution:
+    """The run with ``trajectory`` if it keeps the constraints (projected if asked), or why not."""
+    if not settings.check_constraints:
+        return _with(ran, trajectory)
+    limits = constraints_for(case.scene, settings.constraints, robot_constraints(settings.robot), asked)
+    original = case.trajectory.array
+    violations = new_violations(trajectory.array, original, case.scene, limits)
+    if violations and settings.project:
+        broken = "; ".join(v.message for v in violations)
+        try:
+            projection = project(trajectory.array, original, case.scene, limits)
+        except DependencyNotInstalled as exc:
+            return _with(ran, Failure.of("ConstraintViolation", f"{broken} ({exc})"))
+        note = f"{projection.describe()} (the code's result broke: {broken})"
+        ran = Execution(
+            ran.outcome, ran.stdout, (*ran.notes, note), projection.moves, ran.seconds, ran.layers
+        )
+        trajectory = validate_result(projection.trajectory)
+        violations = new_violations(trajectory.array, original, case.scene, limits)
+    if violations:
+        return _with(ran, Failure.of("ConstraintViolation", "; ".join(v.message for v in violations)))
+    return _with(ran, trajectory)

@@ -58,7 +58,7 @@ def main() -> None:
     parser.add_argument("--out", type=Path, required=True)
     parser.add_argument("--no-readers", action="store_true",
                         help="run the answers as they are, without reading them against the words "
-                        "(leave_out_unasked off)")  # fmt: skip
+                        "(read_against_words off)")  # fmt: skip
     args = parser.parse_args()
     if args.out.exists() and any(args.out.iterdir()):
         parser.error(f"{args.out} is not empty: the runner would keep its results instead of replaying; "
@@ -79,7 +79,7 @@ def main() -> None:
         answers.append(((describe_environment(loaded), "INSTRUCTION: " + loaded.instruction), answer))
         replayed.append(case)
     settings = SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0,
-                               leave_out_unasked=not args.no_readers)  # fmt: skip
+                               read_against_words=not args.no_readers)  # fmt: skip
     records = run_benchmark(replayed, StoredAnswers(answers), BenchConfig(out_dir=args.out, session=settings))
     write_report(args.out, records)
     print(f"replayed {len(records)} stored answers -> {args.out}")

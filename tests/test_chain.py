@@ -17,7 +17,7 @@ from trajadapt.skills import bind_skills
 
 LEFT = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
 SLOW = "t = get_trajectory()\nt = scale_speed(t, 0.5, near=detect_objects('box'))\nmodified_trajectory = t"
-VERBATIM = SessionSettings(leave_out_unasked=False)  # the codes' numbers are not in these instructions
+VERBATIM = SessionSettings(read_against_words=False)  # the codes' numbers are not in these instructions
 UP = "t = get_trajectory()\nt = shift(t, 'up', 0.1)\nmodified_trajectory = t"
 
 

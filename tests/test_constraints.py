@@ -85,7 +85,7 @@ def test_violation_goes_back_with_numbers(bounded_case: Case, sandbox: Sandbox) 
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)"),
                                        answer("modified_trajectory = shift(get_trajectory(), 'left', 0.15)")])  # fmt: skip
     session = AdaptationSession(
-        bounded_case, backend, sandbox, SessionSettings(project=False, leave_out_unasked=False)
+        bounded_case, backend, sandbox, SessionSettings(project=False, read_against_words=False)
     )
     session.draft()
     result = session.approve()
@@ -98,7 +98,7 @@ def test_projection_by_default_keeps_the_room_and_says_what_bound_it(
     bounded_case: Case, sandbox: Sandbox
 ) -> None:
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'left', 0.5)")])
-    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(leave_out_unasked=False))
+    session = AdaptationSession(bounded_case, backend, sandbox, SessionSettings(read_against_words=False))
     session.draft()
     result = session.approve()
     assert result.ok and result.attempts == 1 and result.trajectory is not None

@@ -17,3 +17,19 @@ def test_import_is_light() -> None:
     code = "import sys, trajadapt, trajadapt.sandbox.child; print('openai' in sys.modules, 'llama_cpp' in sys.modules)"
     output = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert output.split() == ["False", "False"]
+
+
+def test_the_packages_export_what_callers_use() -> None:
+    import trajadapt.backends as backends
+    import trajadapt.sandbox as sandbox
+
+    for module in (backends, sandbox):
+        for name in module.__all__:
+            assert getattr(module, name) is not None
+
+
+def test_the_built_in_backends_are_registered_as_entry_points() -> None:
+    from importlib.metadata import entry_points
+
+    declared = {entry.name for entry in entry_points(group="trajadapt.backends")}
+    assert {"local", "openai", "scripted"} <= declared

@@ -134,7 +134,7 @@ def test_the_effect_report_says_which_robot_limit_moved_which_waypoints(
     flat = Trajectory(simple_case.trajectory.array * np.array([1, 1, 0, 1]))
     floor = Case("floor", flat, Scene(), "go up by 0.5")
     backend = ScriptedBackend(answers=[answer("modified_trajectory = shift(get_trajectory(), 'up', 0.5)")])
-    settings = SessionSettings(robot="ground", leave_out_unasked=False)
+    settings = SessionSettings(robot="ground", read_against_words=False)
     session = AdaptationSession(floor, backend, sandbox, settings)
     session.draft()
     result = session.approve()

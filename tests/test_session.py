@@ -159,7 +159,7 @@ def test_skills_mode_binds_the_library_and_takes_the_last_trajectory(
 ) -> None:
     code = "t = get_trajectory()\nt2 = shift(t, 'left', 0.3)\n"
     session, _ = make_session(
-        simple_case, sandbox, answer("1) Shift left.", code), mode="skills", leave_out_unasked=False
+        simple_case, sandbox, answer("1) Shift left.", code), mode="skills", read_against_words=False
     )
     session.draft()
     result = session.approve()
@@ -186,7 +186,7 @@ def test_ovita_axes_flip_skills_in_the_sandbox(simple_case: Case, sandbox: Sandb
 
     code = "modified_trajectory = shift(get_trajectory(), 'left', 0.3)\n"
     session, backend = make_session(
-        simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"], leave_out_unasked=False
+        simple_case, sandbox, answer("1) a", code), axes=AXIS_CONVENTIONS["ovita"], read_against_words=False
     )
     session.draft()
     result = session.approve()
@@ -313,7 +313,7 @@ def test_a_rejected_second_answer_leaves_the_first_result_intact(simple_case: Ca
         simple_case, sandbox,
         answer("1) First.", right.format(tag="first answer")),
         answer("1) Second.", right.format(tag="second answer")),
-        repair_contradictions=True, leave_out_unasked=False,
+        repair_contradictions=True, read_against_words=False,
     )  # fmt: skip
     session.draft()
     result = session.approve()
@@ -327,7 +327,7 @@ def test_a_rejected_second_answer_leaves_the_first_result_intact(simple_case: Ca
 def test_undo_takes_back_the_words_of_the_feedback_it_drops(simple_case: Case, sandbox: Sandbox) -> None:
     left = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
     session, _ = make_session(
-        simple_case, sandbox, answer("1) Left.", left), answer("1) Away.", left), leave_out_unasked=False
+        simple_case, sandbox, answer("1) Left.", left), answer("1) Away.", left), read_against_words=False
     )
     session.draft()
     session.feedback("stay away from the box")

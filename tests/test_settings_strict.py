@@ -58,3 +58,32 @@ def test_good_values_are_read_with_their_types(home, monkeypatch):
     assert (
         settings.examples == 4 and settings.grammar is False and settings.backend_options == {"n_ctx": 4096}
     )
+
+
+def test_the_schema_is_derived_from_the_one_declaration() -> None:
+    from dataclasses import fields
+
+    from trajadapt.session import SessionSettings
+    from trajadapt.settings import CHOICES, ENV_FIELDS, RANGES, Settings
+
+    declared = {f.name for f in fields(Settings)} - {"home", "backend_options"}
+    assert set(ENV_FIELDS) == declared
+    assert CHOICES["robot"] == ("none", "arm", "drone", "ground") and ENV_FIELDS["robot"] is str
+    assert RANGES["examples"] == (0, 12) and ENV_FIELDS["temperature"] is float
+    described = SessionSettings().describe()
+    assert {f.name for f in fields(SessionSettings)} <= set(described)  # describe() omits nothing
+
+
+@pytest.mark.parametrize("source", ["environment", "config"])
+def test_the_old_name_of_the_readers_switch_is_still_read(home, monkeypatch, source):
+    monkeypatch.delenv("TRAJADAPT_READ_AGAINST_WORDS", raising=False)
+    if source == "environment":
+        monkeypatch.setenv("TRAJADAPT_LEAVE_OUT_UNASKED", "false")
+    else:
+        (home / "config.toml").write_text("leave_out_unasked = false\n")
+    settings = load_settings()
+    assert settings.read_against_words is False
+    from trajadapt.session import SessionSettings
+
+    assert SessionSettings.from_settings(settings).leave_out_unasked is False
+    assert load_settings({"leave_out_unasked": True}).read_against_words is True

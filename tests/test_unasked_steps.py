@@ -69,7 +69,7 @@ def test_the_session_leaves_the_step_out_and_says_so(simple_case: Case, sandbox:
     case = simple_case.with_instruction("go left by 0.2")
     for leave_out, expected_length in ((True, len(case.trajectory)), (False, len(case.trajectory) + 10)):
         backend = ScriptedBackend(answers=[answer])
-        session = AdaptationSession(case, backend, sandbox, SessionSettings(leave_out_unasked=leave_out))
+        session = AdaptationSession(case, backend, sandbox, SessionSettings(read_against_words=leave_out))
         assert ("extend" in session.draft().code) is not leave_out
         result = session.approve()
         assert result.trajectory is not None and len(result.trajectory) == expected_length

@@ -16,7 +16,6 @@
     ├── AnswerParseError            the answer holds no plan and code we can read
     ├── SandboxError                generated code could not be run to a result
     │   ├── CodeRejected            the static check refused the code before it ran
-    │   ├── CodeFailed              the code raised, timed out or hit a resource limit
     │   └── InvalidTrajectory       the code ran but its result is not a valid trajectory
     ├── ModelFileError              the embedded model is missing, incomplete or not the pinned one
     ├── SessionStateError           a session method was called out of order
@@ -88,10 +87,6 @@ class SandboxError(TrajadaptError):
 
 class CodeRejected(SandboxError):
     """The static check refused the code before it ran."""
-
-
-class CodeFailed(SandboxError):
-    """The code raised an exception, timed out or hit a resource limit."""
 
 
 class InvalidTrajectory(SandboxError):

@@ -8,7 +8,7 @@ import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, get_args, get_origin, get_type_hints
 
 from trajadapt.errors import InputError
 
@@ -23,9 +23,18 @@ def default_home() -> Path:
     return Path(data_home) / "trajadapt"
 
 
+def _bounded(default: float, low: float, high: float) -> Any:
+    """A number field and the values it may take (the command-line flags have the same bounds)."""
+    return field(default=default, metadata={"range": (low, high)})
+
+
 @dataclass(frozen=True)
 class Settings:
     """Everything configurable, passed explicitly; no global state.
+
+    Each setting is declared here once, with its type: the environment variable
+    (``TRAJADAPT_<NAME>``), the names a ``Literal`` allows, the range of a number, strict parsing and
+    the session's copy (``SessionSettings.from_settings``) all follow from this declaration.
 
     Attributes:
         home: folder for the log database, the model cache and ``config.toml``.
@@ -45,11 +54,10 @@ class Settings:
             far waypoints moved); False sends it back for repair instead.
         grammar: in skills mode, constrain a local model's answer to the scene's answer grammar.
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
-        leave_out_unasked: leave out skill steps of a topic the instruction never mentions (a speed
-            change, an extension past the goal, a pause, a loop, ...; skills mode), and replace a
-            distance the instruction never gives by its vague word or the default, with a review note;
-            also replace a step that does something other than what its clause asks (a part of the
-            path, a speed near an object, a side, closer/away, a stated amount: see the README).
+        read_against_words: read the answer against the user's words (``trajadapt.readers``, skills
+            mode): leave out steps of a topic the words never mention, replace amounts they never
+            give, and steps that do something other than what their clause asks, each with a review
+            note. The old name ``leave_out_unasked`` is still read.
         clause_steps: in skills mode with a grammar, build the first answer's grammar from the
             instruction's clauses: a step per clause, in order, each using only that clause's
             objects, numbers and places (``trajadapt.clauses``).
@@ -65,23 +73,23 @@ class Settings:
     home: Path = field(default_factory=default_home)
     backend: str = "local"
     backend_options: Mapping[str, Any] = field(default_factory=dict)
-    axes: str = "paper"
-    mode: str = "skills"
-    temperature: float = 0.0
-    seed: int = 0
-    repair_attempts: int = 2
+    axes: Literal["paper", "ovita"] = "paper"
+    mode: Literal["skills", "paper"] = "skills"
+    temperature: float = _bounded(0.0, 0.0, 2.0)
+    seed: int = _bounded(0, 0, 2**31 - 1)
+    repair_attempts: int = _bounded(2, 0, 10)
     log: bool = True
     memory: bool = True
-    isolation: str = "auto"
+    isolation: Literal["auto", "bwrap", "process"] = "auto"
     waypoints_in_prompt: bool = False
     project: bool = True
     grammar: bool = True
-    examples: int = 3
-    leave_out_unasked: bool = True
+    examples: int = _bounded(3, 0, 12)
+    read_against_words: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = False
     clause_check: bool = True
-    robot: str = "none"
+    robot: Literal["none", "arm", "drone", "ground"] = "none"
 
     @property
     def log_path(self) -> Path:
@@ -99,26 +107,28 @@ class Settings:
         return self.home / "config.toml"
 
 
-ENV_FIELDS = {
-    "backend": str,
-    "axes": str,
-    "mode": str,
-    "temperature": float,
-    "seed": int,
-    "repair_attempts": int,
-    "log": bool,
-    "memory": bool,
-    "isolation": str,
-    "waypoints_in_prompt": bool,
-    "project": bool,
-    "grammar": bool,
-    "examples": int,
-    "leave_out_unasked": bool,
-    "repair_contradictions": bool,
-    "clause_steps": bool,
-    "clause_check": bool,
-    "robot": str,
-}
+ALIASES = {"leave_out_unasked": "read_against_words"}
+"""Old names of settings, still read from config.toml, the environment and overrides."""
+
+
+def _schema() -> tuple[dict[str, type], dict[str, tuple[str, ...]], dict[str, tuple[float, float]]]:
+    """The type of each setting set by name, the names of each Literal, the range of each number."""
+    hints = get_type_hints(Settings)
+    kinds: dict[str, type] = {}
+    choices: dict[str, tuple[str, ...]] = {}
+    for name in (f.name for f in fields(Settings) if f.name not in ("home", "backend_options")):
+        hint = hints[name]
+        if get_origin(hint) is Literal:
+            choices[name] = tuple(str(value) for value in get_args(hint))
+            hint = str
+        kinds[name] = hint
+    ranges = {f.name: f.metadata["range"] for f in fields(Settings) if "range" in f.metadata}
+    return kinds, choices, ranges
+
+
+ENV_FIELDS, CHOICES, RANGES = _schema()
+"""Derived from ``Settings``: what ``TRAJADAPT_<NAME>`` may set and as which type; the names each
+Literal setting takes; the values each number may take."""
 
 
 def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:
@@ -130,20 +140,12 @@ def load_settings(overrides: Mapping[str, Any] | None = None) -> Settings:
     settings = Settings()
     settings = replace(settings, **_from_toml(settings.config_path))
     settings = replace(settings, **_from_environment())
-    given = {key: value for key, value in (overrides or {}).items() if value is not None}
+    given = {ALIASES.get(key, key): value for key, value in (overrides or {}).items() if value is not None}
     settings = replace(settings, **given)
     _check_choices(settings)
     _check_ranges(settings)
     return settings
 
-
-RANGES: dict[str, tuple[float, float]] = {
-    "temperature": (0.0, 2.0),
-    "seed": (0, 2**31 - 1),
-    "repair_attempts": (0, 10),
-    "examples": (0, 12),
-}
-"""The values each number may take (the command-line flags have the same bounds)."""
 
 TRUE_WORDS, FALSE_WORDS = ("1", "true", "yes", "on"), ("0", "false", "no", "off")
 
@@ -193,15 +195,6 @@ def _parsed(raw: str, kind: type, problem: str) -> Any:
         raise InputError(problem) from exc
 
 
-# The names each setting takes; tests check that they match the prompt conventions, modes and isolations.
-CHOICES: dict[str, tuple[str, ...]] = {
-    "axes": ("ovita", "paper"),
-    "mode": ("paper", "skills"),
-    "isolation": ("auto", "bwrap", "process"),
-    "robot": ("arm", "drone", "ground", "none"),
-}
-
-
 def _check_choices(settings: Settings) -> None:
     for name, allowed in CHOICES.items():
         value = getattr(settings, name)
@@ -220,16 +213,18 @@ def _from_toml(path: Path) -> dict[str, Any]:
     except (OSError, ValueError) as exc:  # TOMLDecodeError and UnicodeDecodeError are ValueErrors
         raise InputError(f"{path}: cannot be read as TOML ({exc})") from exc
     known = {f.name for f in fields(Settings)} - {"home"}
-    unknown = sorted(set(data) - known)
+    unknown = sorted(set(data) - known - set(ALIASES))
     if unknown:
         raise InputError(f"{path}: unknown setting {unknown[0]!r}; known: {', '.join(sorted(known))}")
+    data = {ALIASES.get(name, name): value for name, value in data.items()}
     return {name: typed_value(name, value, str(path)) for name, value in data.items()}
 
 
 def _from_environment() -> dict[str, Any]:
     values: dict[str, Any] = {}
-    for name in ENV_FIELDS:
+    for name in [*ALIASES, *ENV_FIELDS]:  # the new name wins over the old
         raw = os.environ.get(f"TRAJADAPT_{name.upper()}")
         if raw is not None:
-            values[name] = typed_value(name, raw, f"TRAJADAPT_{name.upper()}")
+            setting = ALIASES.get(name, name)
+            values[setting] = typed_value(setting, raw, f"TRAJADAPT_{name.upper()}")
     return values

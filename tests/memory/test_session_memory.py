@@ -29,7 +29,7 @@ def answer(plan: str, code: str) -> str:
 
 
 def session(case: Case, sandbox: Sandbox, bank: MemoryBank | None, *answers: str) -> AdaptationSession:
-    settings = SessionSettings(repair_attempts=0, leave_out_unasked=False)
+    settings = SessionSettings(repair_attempts=0, read_against_words=False)
     return AdaptationSession(case, ScriptedBackend(answers=answers), sandbox, settings, memory=bank)
 
 
@@ -79,7 +79,7 @@ def test_a_correction_replaces_what_the_session_remembered(
     bank = MemoryBank(tmp_path / "memory.jsonl")
     chain = AdaptationChain(
         simple_case.with_instruction("keep clear of the Red Mug"), ScriptedBackend(answers=[answer("1) Closer.", CLOSER), answer("1) Away.", AWAY)]),
-        sandbox, SessionSettings(repair_attempts=0, leave_out_unasked=False), memory=bank,
+        sandbox, SessionSettings(repair_attempts=0, read_against_words=False), memory=bank,
     )  # fmt: skip
     chain.draft()
     chain.approve()
@@ -99,7 +99,7 @@ def test_a_recalled_approved_program_is_not_rewritten_by_the_word_readers(
         "after the goal, go to the box and hover over it", "1) To the box. 2) Hover.", program, ["box"]
     )
     case = simple_case.with_instruction("after the goal, go to the box and hover over it")
-    readers_on = replace(SessionSettings(repair_attempts=0), leave_out_unasked=True)
+    readers_on = replace(SessionSettings(repair_attempts=0), read_against_words=True)
     kept = AdaptationSession(
         case,
         ScriptedBackend(answers=[answer("1) To the box. 2) Hover.", program)]),

@@ -45,7 +45,7 @@ def build_app(
         backend=get_backend("scripted", {"answers": str(answer_file)}),
         sandbox=Sandbox(isolation="process"),
         store=Store(tmp_path / "log.db"),
-        settings=SessionSettings(leave_out_unasked=False),  # the answers use numbers the instructions lack
+        settings=SessionSettings(read_against_words=False),  # the answers use numbers the instructions lack
         work_dir=tmp_path / "web",
         cases_dir=cases_dir,
         simulator=pybullet_simulator("left"),

@@ -21,7 +21,11 @@ BUILTIN_BACKENDS: dict[str, str] = {
 
 
 def registered_backends() -> dict[str, str]:
-    """Every backend name and its entry point: the built-in ones and installed plugins."""
+    """Every backend name and its entry point: the built-in ones and installed plugins.
+
+    The built-ins are declared as entry points in trajadapt's own metadata, the way a plugin is;
+    ``BUILTIN_BACKENDS`` keeps them when that metadata is missing (a source tree on PYTHONPATH).
+    """
     backends = dict(BUILTIN_BACKENDS)
     for entry in entry_points(group=ENTRY_POINT_GROUP):
         backends.setdefault(entry.name, entry.value)

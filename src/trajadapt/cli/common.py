@@ -93,4 +93,4 @@ def isolation_of(settings: Settings) -> Isolation:
     """
     if settings.isolation not in ("auto", "bwrap", "process"):
         raise InputError(f"isolation must be auto, bwrap or process, not {settings.isolation!r}")
-    return settings.isolation  # type: ignore[return-value]
+    return settings.isolation

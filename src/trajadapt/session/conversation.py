@@ -202,7 +202,7 @@ class Conversation:
     def _read_against_words(self, plan: Plan) -> Plan:
         """The plan after the readers of ``trajadapt.readers`` (skills mode), their changes noted."""
         self._left_out = []
-        if self.settings.mode != "skills" or not self.settings.leave_out_unasked:
+        if self.settings.mode != "skills" or not self.settings.read_against_words:
             return plan
         approved = next((e for e in self.recalled_examples if _same_program(e.code, plan.code)), None)
         if approved is not None:  # the user's own approved program for a request like this one

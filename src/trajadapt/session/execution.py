@@ -85,8 +85,6 @@ def held_to_constraints(
     ran: Execution, trajectory: Trajectory, case: Case, settings: SessionSettings, asked: str
 ) -> Execution:
     """The run with ``trajectory`` if it keeps the constraints (projected if asked), or why not."""
-    if not settings.check_constraints:
-        return _with(ran, trajectory)
     limits = constraints_for(case.scene, settings.constraints, robot_constraints(settings.robot), asked)
     original = case.trajectory.array
     violations = new_violations(trajectory.array, original, case.scene, limits)

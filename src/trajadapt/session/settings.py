@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any
 
 from trajadapt import __version__
@@ -28,7 +28,6 @@ class SessionSettings:
     format_retries: int = 1
     constraints: Constraints | None = None
     robot: str = "none"
-    check_constraints: bool = True
     project: bool = True
     temperature: float = 0.0
     max_tokens: int = 1024
@@ -36,50 +35,32 @@ class SessionSettings:
     waypoints_in_prompt: bool = False
     grammar: bool = True
     examples: int = 3
-    leave_out_unasked: bool = True
+    read_against_words: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = False
     clause_check: bool = True
 
+    @property
+    def leave_out_unasked(self) -> bool:
+        """The old name of ``read_against_words``."""
+        return self.read_against_words
+
     @classmethod
     def from_settings(cls, settings: Settings, constraints: Constraints | None = None) -> SessionSettings:
-        """The one way from the user's settings (config, environment, flags) to a session's."""
-        return cls(
-            axes=AXIS_CONVENTIONS[settings.axes],
-            mode=settings.mode,
-            repair_attempts=settings.repair_attempts,
-            constraints=constraints,
-            robot=settings.robot,
-            project=settings.project,
-            temperature=settings.temperature,
-            seed=settings.seed,
-            waypoints_in_prompt=settings.waypoints_in_prompt,
-            grammar=settings.grammar,
-            examples=settings.examples,
-            leave_out_unasked=settings.leave_out_unasked,
-            repair_contradictions=settings.repair_contradictions,
-            clause_steps=settings.clause_steps,
-            clause_check=settings.clause_check,
-        )
+        """The one way from the user's settings (config, environment, flags) to a session's.
+
+        Every setting a session has under the same name is copied; ``axes`` becomes its convention.
+        """
+        shared = {f.name for f in fields(cls)} & {f.name for f in fields(Settings)}
+        values: dict[str, Any] = {name: getattr(settings, name) for name in shared}
+        values["axes"] = AXIS_CONVENTIONS[settings.axes]
+        return cls(**values, constraints=constraints)
 
     def describe(self) -> dict[str, Any]:
-        """What reproduces a run, for result files and the log."""
-        return {
-            "trajadapt_version": __version__,
-            "mode": self.mode,
-            "axes": self.axes.name,
-            "temperature": self.temperature,
-            "seed": self.seed,
-            "max_tokens": self.max_tokens,
-            "repair_attempts": self.repair_attempts,
-            "waypoints_in_prompt": self.waypoints_in_prompt,
-            "project": self.project,
-            "robot": self.robot,
-            "constraints": list(self.constraints.sources) if self.constraints else [],
-            "grammar": self.grammar,
-            "examples": self.examples,
-            "leave_out_unasked": self.leave_out_unasked,
-            "repair_contradictions": self.repair_contradictions,
-            "clause_steps": self.clause_steps,
-            "clause_check": self.clause_check,
-        }
+        """What reproduces a run, for result files and the log: every field, and the version."""
+        described: dict[str, Any] = {"trajadapt_version": __version__}
+        for item in fields(self):
+            described[item.name] = getattr(self, item.name)
+        described["axes"] = self.axes.name
+        described["constraints"] = list(self.constraints.sources) if self.constraints else []
+        return described

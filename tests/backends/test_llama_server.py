@@ -71,7 +71,19 @@ def _wait_until_up(server: subprocess.Popen[bytes], base_url: str, log: Path) ->
 
 
 def _adapt(case: Path, out: Path, *backend: str) -> dict[str, object]:
-    arguments = ["adapt", str(case), *backend, "--yes", "--no-log", "--repairs", "0", "--out", str(out)]
+    """Adapt ``case`` with no memory: the two runs must see the same prompt (an approval would be recalled)."""
+    arguments = [
+        "adapt",
+        str(case),
+        *backend,
+        "--yes",
+        "--no-log",
+        "--no-memory",
+        "--repairs",
+        "0",
+        "--out",
+        str(out),
+    ]
     result = CliRunner().invoke(cli, arguments)
     assert result.exit_code == 0, result.output
     return json.loads(out.read_text())

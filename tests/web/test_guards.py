@@ -148,3 +148,36 @@ def test_every_answer_forbids_framing(client: TestClient) -> None:
             headers["x-frame-options"] == "DENY"
             and "frame-ancestors 'none'" in headers["content-security-policy"]
         )
+
+
+def test_a_body_that_never_finishes_is_refused_at_the_deadline(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A client that sends half a body and stops gets a 408; the app never sees the request."""
+    import asyncio
+
+    from trajadapt.web import guards
+
+    monkeypatch.setattr(guards, "BODY_TIMEOUT_S", 0.2)
+    reached: list[str] = []
+
+    async def app(scope, receive, send):
+        reached.append("app")
+
+    sent: list[dict] = []
+    parts = [{"type": "http.request", "body": b"{", "more_body": True}]
+
+    async def receive():
+        if parts:
+            return parts.pop()
+        await asyncio.sleep(3600)  # the rest never comes
+
+    async def send(message):
+        sent.append(message)
+
+    scope = {
+        "type": "http",
+        "method": "POST",
+        "path": "/api/sessions",
+        "headers": [(b"content-length", b"100")],
+    }
+    asyncio.run(asyncio.wait_for(guards.BodyLimit(app)(scope, receive, send), 5))
+    assert sent[0]["status"] == 408 and reached == []

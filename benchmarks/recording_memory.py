@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.files.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, POSE_TYPE, _path_message, write_paths
+from trajadapt.files.rosbag_io import MULTIDOF_TYPE, PATH_TYPE, POSE_TYPE, WRITERS, write_paths
 from trajadapt.model.trajectory import Trajectory
 
 READ = """
@@ -87,7 +87,7 @@ def write_compressed_plan(folder: Path, poses: int) -> Path:
     from rosbags.typesys import Stores, get_typestore
 
     store = get_typestore(Stores.ROS2_HUMBLE)
-    message = _path_message(store.types, rows(poses), "map", 0, False)
+    message = WRITERS[PATH_TYPE](store.types, rows(poses), "map", 0, False)
     data = store.serialize_cdr(message, PATH_TYPE)
     target = folder / f"compressed-{poses}.mcap"
     with target.open("wb") as stream:

@@ -289,9 +289,13 @@ def write_paths(
         publish_bytes(out, written.read_bytes(), replace)
 
 
+def _split_time(types: Any, kind: str, nanoseconds: int) -> Any:
+    """A ``builtin_interfaces`` Time or Duration of ``nanoseconds``."""
+    return types[f"builtin_interfaces/msg/{kind}"](sec=nanoseconds // 10**9, nanosec=nanoseconds % 10**9)
+
+
 def _header(types: Any, frame: str, start_ns: int, seconds: float, ros1: bool) -> Any:
-    total = start_ns + round(seconds * 1e9)
-    stamp = types["builtin_interfaces/msg/Time"](sec=total // 10**9, nanosec=total % 10**9)
+    stamp = _split_time(types, "Time", start_ns + round(seconds * 1e9))
     return types["std_msgs/msg/Header"](**({"seq": 0} if ros1 else {}), stamp=stamp, frame_id=frame)
 
 
@@ -321,10 +325,7 @@ def _multidof_message(types: Any, rows: Array, frame: str, start_ns: int, ros1: 
         rotation = types["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0)
         transform = types["geometry_msgs/msg/Transform"](translation=vector(row[:3]), rotation=rotation)
         twist = types["geometry_msgs/msg/Twist"](linear=vector(velocity), angular=vector(np.zeros(3)))
-        nanoseconds = round(seconds * 1e9)
-        duration = types["builtin_interfaces/msg/Duration"](
-            sec=nanoseconds // 10**9, nanosec=nanoseconds % 10**9
-        )
+        duration = _split_time(types, "Duration", round(seconds * 1e9))
         return types["trajectory_msgs/msg/MultiDOFJointTrajectoryPoint"](
             transforms=[transform], velocities=[twist], accelerations=[], time_from_start=duration
         )

@@ -15,7 +15,7 @@ import os
 import socket
 import time
 import uuid
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -99,10 +99,8 @@ class MemoryBank:
 
     def forget(self, example_id: str) -> bool:
         """Forget an example; False when there is none with that id."""
-        if self.get(example_id) is None:
-            return False
-        self._write_lines([{"op": "remove", "id": example_id}])
-        return True
+        removal = {"op": "remove", "id": example_id}
+        return bool(self._update(lambda live: [removal] if any(e.id == example_id for e in live) else []))
 
     def export(self, target: Path) -> int:
         """Write the live examples to ``target`` as a bank file of its own; how many."""
@@ -131,26 +129,39 @@ class MemoryBank:
 
     def _append(self, examples: list[RememberedExample]) -> list[RememberedExample]:
         """Add examples not already kept (same instruction and code); the kept ones, as stored."""
-        kept = {(e.instruction, e.code): e for e in self.examples()}
-        new = [e for e in examples if (e.instruction, e.code) not in kept]
-        if len(kept) + len(new) > MAX_EXAMPLES:
-            raise MemoryUnusable(f"the bank {self.path} holds {MAX_EXAMPLES} examples; forget some first")
-        if new:
-            self._write_lines([example.to_record() for example in new])
+        kept: dict[tuple[str, str], RememberedExample] = {}
+
+        def additions(live: list[RememberedExample]) -> list[dict[str, Any]]:
+            kept.update({(e.instruction, e.code): e for e in live})
+            new = [e for e in examples if (e.instruction, e.code) not in kept]
+            if len(kept) + len(new) > MAX_EXAMPLES:
+                raise MemoryUnusable(f"the bank {self.path} holds {MAX_EXAMPLES} examples; forget some first")
+            return [example.to_record() for example in new]
+
+        self._update(additions)
         return [kept.get((e.instruction, e.code), e) for e in examples]
 
-    def _write_lines(self, records: Iterable[dict[str, Any]]) -> None:
+    def _update(self, records_for: Callable[[list[RememberedExample]], list[dict[str, Any]]]) -> int:
+        """Append the records ``records_for`` gives for the live examples; how many.
+
+        The file is read and written under one exclusive lock, so a check and its write are never
+        split by another process (two approving the same answer keep it once).
+        """
         if self.read_only:
             raise MemoryUnusable(f"the bank {self.path} was opened read-only")
-        body = "".join(json.dumps(record) + "\n" for record in records)
         with self._locked(fcntl.LOCK_EX, "write to", create=True) as stream:
-            if stream.seek(0, os.SEEK_END) == 0:
+            records = records_for(list(_live(_records(stream.read(), str(self.path)))))
+            if not records:
+                return 0
+            body = "".join(json.dumps(record) + "\n" for record in records)
+            if stream.tell() == 0:
                 body = json.dumps(FORMAT) + "\n" + body
             if stream.tell() + len(body) > MAX_FILE_BYTES:
                 raise MemoryUnusable(f"the bank {self.path} is full ({MAX_FILE_BYTES // 2**20} MB)")
             stream.write(body)
             stream.flush()
             os.fsync(stream.fileno())
+        return len(records)
 
     @contextmanager
     def _locked(self, mode: int, doing: str, create: bool = False) -> Iterator[Any]:

@@ -14,6 +14,7 @@ from string import Template
 import numpy as np
 
 from trajadapt.backends.base import ChatMessage
+from trajadapt.llm.example_bank import Example
 from trajadapt.memory import RememberedExample, choose_examples
 from trajadapt.model.case import Case
 from trajadapt.model.geometry import AxisConvention
@@ -96,28 +97,35 @@ def list_waypoints(trajectory: Trajectory) -> str:
     return "\n".join("[" + ", ".join(f"{value:.3g}" for value in row) + "]" for row in trajectory.array)
 
 
-def render_examples(case: Case, count: int, remembered: Sequence[RememberedExample] = ()) -> str:
-    """The ``count`` examples nearest to the case's instruction, nearest last, as a prompt section.
+def chosen_examples(
+    case: Case, mode: str, count: int, remembered: Sequence[RememberedExample] = ()
+) -> tuple[Example, ...]:
+    """The examples the first prompt shows, best first (none in paper mode, whose prompt is fixed).
 
-    They come from the shipped bank and the user's ``remembered`` answers (``memory.choose_examples``).
+    They are the ``count`` nearest to the instruction from the shipped bank and the user's
+    ``remembered`` answers (``memory.choose_examples``).
     """
-    chosen = choose_examples(case.instruction, count, case.scene.names(), remembered)
+    if mode != "skills":
+        return ()
+    return tuple(choose_examples(case.instruction, count, case.scene.names(), remembered))
+
+
+def render_examples(chosen: Sequence[Example]) -> str:
+    """The chosen examples, nearest last, as a prompt section ('' for none)."""
     if not chosen:
         return ""
     body = "\n\n".join(example.render() for example in reversed(chosen))
     return f"EXAMPLES CLOSE TO THIS INSTRUCTION (their objects are not in this scene):\n{body}\n\n"
 
 
-def task_prompt(
-    case: Case, waypoints: bool = False, examples: int = 0, remembered: Sequence[RememberedExample] = ()
-) -> str:
+def task_prompt(case: Case, waypoints: bool = False, chosen: Sequence[Example] = ()) -> str:
     """The per-request part: chosen examples, environment, trajectory summary, instruction."""
     trajectory = summarize_trajectory(case.trajectory)
     if waypoints:
         trajectory += "\n- waypoints [x, y, z, velocity]:\n" + list_waypoints(case.trajectory)
     return render(
         "task",
-        examples=render_examples(case, examples, remembered),
+        examples=render_examples(chosen),
         environment=describe_environment(case),
         trajectory=trajectory,
         instruction=case.instruction,
@@ -131,15 +139,17 @@ def first_messages(
     waypoints: bool = False,
     examples: int = 0,
     remembered: Sequence[RememberedExample] = (),
+    chosen: Sequence[Example] | None = None,
 ) -> tuple[ChatMessage, ...]:
     """The opening conversation for ``case``.
 
-    ``waypoints`` adds every waypoint to the summary; ``examples`` puts that many examples nearest to
-    the instruction (from the shipped bank and the user's ``remembered`` answers) before the
-    environment (skills mode only: the paper's prompt is fixed).
+    ``waypoints`` adds every waypoint to the summary. The examples before the environment are
+    ``chosen`` when given (a session chooses them once and keeps the choice), else
+    ``chosen_examples(case, mode, examples, remembered)``.
     """
-    count = examples if mode == "skills" else 0
+    if chosen is None:
+        chosen = chosen_examples(case, mode, examples, remembered)
     return (
         ChatMessage("system", system_prompt(axes, mode)),
-        ChatMessage("user", task_prompt(case, waypoints, count, remembered)),
+        ChatMessage("user", task_prompt(case, waypoints, chosen)),
     )

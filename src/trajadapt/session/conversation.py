@@ -8,7 +8,6 @@ checkpoint keeps where the conversation stood, the words said by then and the re
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
 from dataclasses import replace
 
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
@@ -18,10 +17,9 @@ from trajadapt.errors import AnswerParseError, SessionStateError
 from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
 from trajadapt.llm.answer_grammar import answer_grammar
-from trajadapt.llm.example_bank import Example
-from trajadapt.memory import MemoryBank, RememberedExample, choose_examples
+from trajadapt.memory import MemoryBank
 from trajadapt.model.case import Case
-from trajadapt.prompts import first_messages, render
+from trajadapt.prompts import chosen_examples, first_messages, render
 from trajadapt.readers import ReaderNote, read_against_words
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import Sandbox
@@ -30,16 +28,6 @@ from trajadapt.session.records import Checkpoint, Explanation, ProgressCallback,
 from trajadapt.session.settings import SessionSettings
 
 Mark = tuple[int, int, int, list[ReaderNote]]
-
-
-def _recalled(
-    case: Case, settings: SessionSettings, remembered: Sequence[RememberedExample]
-) -> tuple[Example, ...]:
-    """The remembered examples the first prompt shows (the same choice ``first_messages`` made)."""
-    if not remembered or settings.mode != "skills":
-        return ()
-    chosen = choose_examples(case.instruction, settings.examples, case.scene.names(), remembered)
-    return tuple(example for example in chosen if example.remembered)
 
 
 def _same_program(first: str, second: str) -> bool:
@@ -75,12 +63,12 @@ class Conversation:
         self.on_progress = on_progress or (lambda _message: None)
         remembered = memory.examples() if memory is not None else []
         s = self.settings
+        chosen = chosen_examples(case, s.mode, s.examples, remembered)
         self.messages: list[ChatMessage] = list(
-            first_messages(case, s.axes, s.mode, s.waypoints_in_prompt, s.examples, remembered)
+            first_messages(case, s.axes, s.mode, s.waypoints_in_prompt, chosen=chosen)
         )
         self.turns: list[Turn] = []
-        self.recalled_examples = _recalled(case, s, remembered)
-        self.recalled = tuple(example.remembered for example in self.recalled_examples)
+        self.recalled_examples = tuple(example for example in chosen if example.remembered)
         self._remembered_as = ""
         self._llm_s = self._exec_s = 0.0
         self._tokens = {"prompt": 0, "completion": 0}
@@ -89,6 +77,11 @@ class Conversation:
         self._model_explanations: dict[str, Explanation] = {}
         self._started = time.perf_counter()
         self._checkpoints: list[Checkpoint] = []  # right after each plan
+
+    @property
+    def recalled(self) -> tuple[str, ...]:
+        """Ids of the user's remembered examples the first prompt showed."""
+        return tuple(example.remembered for example in self.recalled_examples)
 
     @property
     def session_id(self) -> str | None:

@@ -8,7 +8,7 @@ the result it keeps and drops the others whole.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from trajadapt.checks.constraints import ConstraintMove, constraints_for, new_violations
 from trajadapt.checks.projection import project
@@ -66,19 +66,14 @@ def execute(
     ran = Execution(Failure("NoResult", "the code produced no trajectory"), result.stdout, result.notes,
                     seconds=result.duration_s, layers=tuple(result.layers))  # fmt: skip
     if result.error is not None:
-        return _with(ran, Failure(result.error.type, result.error.describe()))
+        return replace(ran, outcome=Failure(result.error.type, result.error.describe()))
     if result.rows is None:
         return ran
     try:
         trajectory = validate_result(result.rows)
     except InvalidTrajectory as exc:
-        return _with(ran, Failure.of("InvalidTrajectory", str(exc)))
+        return replace(ran, outcome=Failure.of("InvalidTrajectory", str(exc)))
     return held_to_constraints(ran, trajectory, case, settings, " ".join(asked))
-
-
-def _with(execution: Execution, outcome: Outcome) -> Execution:
-    return Execution(outcome, execution.stdout, execution.notes, execution.moves, execution.seconds,
-                     execution.layers)  # fmt: skip
 
 
 def held_to_constraints(
@@ -93,13 +88,13 @@ def held_to_constraints(
         try:
             projection = project(trajectory.array, original, case.scene, limits)
         except DependencyNotInstalled as exc:
-            return _with(ran, Failure.of("ConstraintViolation", f"{broken} ({exc})"))
+            return replace(ran, outcome=Failure.of("ConstraintViolation", f"{broken} ({exc})"))
         note = f"{projection.describe()} (the code's result broke: {broken})"
-        ran = Execution(
-            ran.outcome, ran.stdout, (*ran.notes, note), projection.moves, ran.seconds, ran.layers
-        )
+        ran = replace(ran, notes=(*ran.notes, note), moves=projection.moves)
         trajectory = validate_result(projection.trajectory)
         violations = new_violations(trajectory.array, original, case.scene, limits)
     if violations:
-        return _with(ran, Failure.of("ConstraintViolation", "; ".join(v.message for v in violations)))
-    return _with(ran, trajectory)
+        return replace(
+            ran, outcome=Failure.of("ConstraintViolation", "; ".join(v.message for v in violations))
+        )
+    return replace(ran, outcome=trajectory)

@@ -224,7 +224,7 @@ def test_a_request_grammar_constrains_decoding_unless_turned_off() -> None:
 
     request = replace(REQUEST, grammar=answer_grammar(("box",)).to_gbnf())
     fake = FakeLlama("{}")
-    backend = LocalBackend(LocalOptions(json_schema=True), llama=fake)
+    backend = LocalBackend(LocalOptions(json_schema=True, decoder="llama.cpp"), llama=fake)
     backend.complete(request)
     backend.complete(request)
     assert isinstance(fake.calls[0]["grammar"], LlamaGrammar) and "response_format" not in fake.calls[0]
@@ -232,3 +232,43 @@ def test_a_request_grammar_constrains_decoding_unless_turned_off() -> None:
     free = FakeLlama("{}")
     LocalBackend(LocalOptions(grammar=False), llama=free).complete(request)
     assert "grammar" not in free.calls[0]
+
+
+def test_llama_cpp_streams_its_pieces_to_the_request() -> None:
+    from dataclasses import replace
+
+    pieces: list[str] = []
+    LocalBackend(LocalOptions(), llama=FakeLlama("go left now")).complete(
+        replace(REQUEST, on_text=pieces.append)
+    )
+    assert "".join(pieces).split() == ["go", "left", "now"]
+
+
+def test_the_decoder_option_names_its_choices() -> None:
+    from trajadapt.errors import BackendOptionError
+
+    assert LocalBackend.from_options({"decoder": "llama.cpp"}).options.decoder == "llama.cpp"
+    with pytest.raises(BackendOptionError, match="llguidance, llama.cpp"):
+        LocalBackend.from_options({"decoder": "xgrammar"})
+
+
+@pytest.mark.local_model
+@needs_model
+def test_llguidance_writes_what_llama_cpps_grammar_sampler_writes(
+    simple_case: Case, real_model: Path
+) -> None:
+    """Checking the first choice and feeding forced text at once change no token of the answer."""
+    from trajadapt.llm.answer_grammar import answer_grammar
+    from trajadapt.model.geometry import AXIS_CONVENTIONS
+    from trajadapt.prompts import first_messages
+
+    messages = first_messages(simple_case, AXIS_CONVENTIONS["paper"], "skills", examples=3)
+    grammar = answer_grammar(tuple(simple_case.scene.names())).to_gbnf()
+    request = ChatRequest(messages=messages, max_tokens=300, grammar=grammar)
+    answers = {}
+    for decoder in ("llguidance", "llama.cpp"):
+        backend = LocalBackend(LocalOptions(model_path=real_model, decoder=decoder, prompt_cache=False))
+        answers[decoder] = backend.complete(request)
+    assert answers["llguidance"].text == answers["llama.cpp"].text
+    assert answers["llguidance"].details["forced_tokens"] > 0
+    assert answers["llguidance"].details["decodes"] < (answers["llguidance"].usage.completion_tokens or 0)

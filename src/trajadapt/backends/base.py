@@ -36,6 +36,8 @@ class ChatRequest:
     json_schema: Mapping[str, Any] | None = None
     grammar: str | None = None
     """GBNF text the answer must follow (llama.cpp's constrained decoding); ignored where unsupported."""
+    on_text: Callable[[str], None] | None = field(default=None, compare=False)
+    """Called with each piece of the answer as it is written, by backends that stream."""
 
 
 @dataclass(frozen=True)
@@ -133,6 +135,11 @@ def parse_options(options_type: type[Any], raw: Mapping[str, Any], backend: str)
 
 
 def _convert(value: Any, hint: Any, where: str) -> Any:
+    if typing.get_origin(hint) is Literal:
+        choices = typing.get_args(hint)
+        if value not in choices:
+            raise BackendOptionError(f"{where}: {value!r} is not one of {', '.join(map(str, choices))}")
+        return value
     if not isinstance(value, str):
         return value
     if value.lower() in ("none", "null") and _allows_none(hint):

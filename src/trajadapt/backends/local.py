@@ -12,9 +12,10 @@ import threading
 import time
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion, PrepareProgress, Usage
+from trajadapt.backends.guided_decoding import LlamaModel, Sampling, decode, grammar_tokenizer, prompt_tokens
 from trajadapt.backends.prompt_state import PromptStateCache
 from trajadapt.errors import BackendRejected, BackendUnavailable, DependencyNotInstalled, EmptyCompletion
 from trajadapt.llm.model_file import MODEL_FILENAME, ensure_model
@@ -39,6 +40,9 @@ class LocalOptions:
             scene's objects and the skill library's calls); off: decode freely.
         prompt_cache: save llama.cpp's state after the fixed prompt to disk, so that a new process
             does not read the whole prompt again.
+        decoder: who keeps the answer to the grammar: ``llguidance`` (the model's choice checked
+            first, forced text fed in one batch; ``guided_decoding``) or ``llama.cpp`` (its grammar
+            sampler, every token checked against the grammar and fed on its own: slower, kept to compare).
     """
 
     model_path: Path | None = None
@@ -50,6 +54,7 @@ class LocalOptions:
     json_schema: bool = False
     grammar: bool = True
     prompt_cache: bool = True
+    decoder: Literal["llguidance", "llama.cpp"] = "llguidance"
 
 
 ANSWER_SCHEMA = {
@@ -195,7 +200,9 @@ class LocalBackend(Backend):
             path = self.model_path()
         if progress is not None:
             progress("loading the model", 0, 1)
-        self._load(path)
+        llama = self._load(path)
+        if self.options.grammar and self.options.decoder == "llguidance":
+            grammar_tokenizer(llama)
         if progress is not None:
             progress("loading the model", 1, 1)
 
@@ -228,25 +235,48 @@ class LocalBackend(Backend):
                 llama.reset()  # back to a saved prefix (after an explanation): restore it, do not re-read it
             self._prefix = prefix
             restored = states.restore(llama, prefix) if states else 0
-            chunks, first_token_s = self._stream(llama, request)
+            if self._guided(request):
+                text, usage, details = self._decode(llama, request)
+            else:
+                text, usage, details = self._stream(llama, request)
             duration = time.perf_counter() - started
             if states and not restored and not states.path_for(prefix).exists():
                 states.save(llama, prefix)
-        text = "".join(chunks)
         if not text.strip():
             raise EmptyCompletion("the local model returned an empty answer; try again or rephrase")
-        usage = _usage(llama, text)
         return Completion(
             text=text,
             model=self.model,
             usage=usage,
             duration_s=duration,
-            details={
-                "prefill_s": first_token_s,
-                "generation_s": duration - first_token_s,
-                "restored_prompt_tokens": restored,
-            },
+            details={**details, "restored_prompt_tokens": restored},
         )
+
+    def _guided(self, request: ChatRequest) -> bool:
+        return bool(self.options.grammar and request.grammar and self.options.decoder == "llguidance")
+
+    def _decode(self, llama: Any, request: ChatRequest) -> tuple[str, Usage, dict[str, Any]]:
+        """The answer under the request's grammar with llguidance (``guided_decoding``)."""
+        messages = [{"role": m.role, "content": m.content} for m in request.messages]
+        decoded = decode(
+            LlamaModel(llama),
+            grammar_tokenizer(llama),
+            prompt_tokens(llama, messages),
+            request.grammar or "",
+            request.max_tokens,
+            Sampling(request.temperature, request.seed),
+            request.on_text,
+        )
+        usage = Usage(prompt_tokens=decoded.prompt_tokens, completion_tokens=decoded.written_tokens)
+        details = {
+            "prefill_s": decoded.read_s,
+            "generation_s": decoded.write_s,
+            "fresh_prompt_tokens": decoded.fresh_tokens,
+            "forced_tokens": decoded.forced_tokens,
+            "decodes": decoded.decodes,
+            "masked_steps": decoded.masked,
+        }
+        return decoded.text, usage, details
 
     def _compiled(self, grammar: str) -> Any:
         """llama.cpp's parsed grammar for this text, kept for the next request of the same scene."""
@@ -262,7 +292,8 @@ class LocalBackend(Backend):
             self._grammars[grammar] = compiled
         return self._grammars[grammar]
 
-    def _stream(self, llama: Any, request: ChatRequest) -> tuple[list[str], float]:
+    def _stream(self, llama: Any, request: ChatRequest) -> tuple[str, Usage, dict[str, Any]]:
+        """The answer from llama-cpp-python's chat completion (free, JSON schema or its grammar sampler)."""
         arguments: dict[str, Any] = {
             "messages": [{"role": m.role, "content": m.content} for m in request.messages],
             "temperature": request.temperature,
@@ -284,6 +315,8 @@ class LocalBackend(Backend):
                     first_token_s = time.perf_counter() - started
                 if piece:
                     chunks.append(piece)
+                    if request.on_text is not None:
+                        request.on_text(piece)
         except ValueError as exc:  # llama-cpp-python's only signal for a prompt longer than the context
             if "context window" not in str(exc):
                 raise
@@ -291,7 +324,9 @@ class LocalBackend(Backend):
                 f"the conversation is longer than the local model's context ({exc}); start a new session, "
                 "or give the model a larger context with -o n_ctx 8192"
             ) from exc
-        return chunks, first_token_s
+        text = "".join(chunks)
+        generation_s = time.perf_counter() - started - first_token_s
+        return text, _usage(llama, text), {"prefill_s": first_token_s, "generation_s": generation_s}
 
 
 def _usage(llama: Any, text: str) -> Usage:

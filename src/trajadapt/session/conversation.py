@@ -17,6 +17,7 @@ from trajadapt.errors import AnswerParseError, SessionStateError
 from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
 from trajadapt.llm.answer_grammar import answer_grammar
+from trajadapt.llm.plan_stream import PlanStream
 from trajadapt.memory import MemoryBank
 from trajadapt.model.case import Case
 from trajadapt.prompts import chosen_examples, first_messages, render
@@ -208,12 +209,19 @@ class Conversation:
     def _complete(self, first: bool = False) -> Completion:
         """Send the conversation so far and count the time and tokens of the answer."""
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
+        steps: list[str] = []
+
+        def show(step: str) -> None:  # the plan so far, while the code is still being written
+            steps.append(step)
+            self.on_progress("plan: " + " ".join(steps))
+
         request = ChatRequest(
             messages=tuple(self.messages),
             temperature=self.settings.temperature,
             max_tokens=self.settings.max_tokens,
             seed=self.settings.seed,
             grammar=self._answer_grammar(first),
+            on_text=PlanStream(show).feed,
         )
         started = time.perf_counter()
         completion = self.backend.complete(request)

@@ -4,7 +4,7 @@ Run: .venv/bin/python benchmarks/compare_runs.py BEFORE_DIR AFTER_DIR [--first-a
 
 Prints, per subset and overall, how many of the common judged cases passed in each run, the median
 and 90th percentile of the LLM time per case, the mean completion tokens, and which cases were gained
-or lost; then the same for each half of the cases (``trajadapt.bench.halves``: the development half
+or lost, and in how many the code is the same; then the same for each half of the cases (``trajadapt.bench.halves``: the development half
 a change was written from, the validation half it was not). With --first-answers a case counts as passed only if it passed without a repair round (the
 answer the user would have seen first).
 """
@@ -27,6 +27,7 @@ class Outcome:
     passed: bool
     llm_s: float
     completion_tokens: int
+    code: str = ""
 
 
 def load_outcomes(folder: Path, first_answers: bool) -> dict[str, Outcome]:
@@ -45,6 +46,7 @@ def load_outcomes(folder: Path, first_answers: bool) -> dict[str, Outcome]:
             passed=passed,
             llm_s=float((result.get("timings_s") or {}).get("llm") or 0.0),
             completion_tokens=int((result.get("tokens") or {}).get("completion") or 0),
+            code=str(result.get("code") or ""),
         )
     return outcomes
 
@@ -99,6 +101,8 @@ def main() -> None:
     lost = [k for k in common if before[k].passed and not after[k].passed]
     print(f"\ngained ({len(gained)}): {', '.join(gained) or '-'}")
     print(f"lost ({len(lost)}): {', '.join(lost) or '-'}")
+    same = sum(before[k].code == after[k].code for k in common)
+    print(f"the same code in {same} of {len(common)}")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import itertools
+import shutil
 import sys
 import threading
 import time
@@ -55,9 +56,10 @@ class Progress:
         for frame in itertools.cycle("|/-\\"):
             if self._stop.wait(0.15):
                 return
-            elapsed = time.monotonic() - self._since
-            line = f"\r\033[K{frame} {self._message} ({elapsed:.0f} s)"
-            self.stream.write(line[:200])
+            elapsed = f" ({time.monotonic() - self._since:.0f} s)"
+            room = shutil.get_terminal_size((100, 20)).columns - len(elapsed) - 3
+            message = self._message if len(self._message) <= room else "…" + self._message[-(room - 1) :]
+            self.stream.write(f"\r\033[K{frame} {message}{elapsed}")
             self.stream.flush()
 
 

@@ -15,6 +15,7 @@ token, writing in 3-6 s instead of 6-10 s (docs/benchmarks.md, "Issue #26").
 from __future__ import annotations
 
 import codecs
+import ctypes
 import threading
 import time
 import weakref
@@ -82,14 +83,44 @@ def grammar_tokenizer(llama: Any) -> Any:
     with _tokenizers_lock:
         if llama not in _tokenizers:
             try:
-                from llguidance.llamacpp import lltokenizer_from_vocab
+                from llguidance import LLTokenizer
             except ImportError as exc:
                 raise DependencyNotInstalled(
                     'decoding under a grammar needs llguidance; run: pip install "trajadapt[local]" '
                     "(or use -o decoder llama.cpp)"
                 ) from exc
-            _tokenizers[llama] = lltokenizer_from_vocab(llama._model.vocab)
+            import llama_cpp
+
+            vocab = llama._model.vocab
+            tokenize = ctypes.cast(llama_cpp.llama_cpp._lib.llama_tokenize, ctypes.c_void_p).value
+            _tokenizers[llama] = LLTokenizer.from_llamacpp(  # type: ignore[attr-defined]
+                tokens=_token_bytes(vocab),
+                vocab_ptr=vocab,
+                tokenize_fptr=tokenize,
+                eos_token=llama_cpp.llama_vocab_eos(vocab),
+                slices=None,
+            )
         return _tokenizers[llama]
+
+
+def _token_bytes(vocab: Any) -> list[bytes]:
+    """Each token's bytes; control tokens marked with a leading 0xFF, as llguidance expects."""
+    import llama_cpp
+
+    buffer = ctypes.create_string_buffer(1024)
+    tokens = []
+    for token in range(llama_cpp.llama_vocab_n_tokens(vocab)):
+        length = llama_cpp.llama_token_to_piece(vocab, token, buffer, len(buffer), 0, True)
+        if length < 0:
+            raise BackendRejected(f"token {token} of the model is longer than {len(buffer)} bytes")
+        piece = buffer.raw[:length]
+        attributes = llama_cpp.llama_vocab_get_attr(vocab, token)
+        looks_special = piece.startswith(b"<") and piece.endswith(b">")
+        special = attributes & llama_cpp.LLAMA_TOKEN_ATTR_CONTROL or (
+            attributes & llama_cpp.LLAMA_TOKEN_ATTR_USER_DEFINED and looks_special
+        )
+        tokens.append(b"\xff" + piece if special else piece)
+    return tokens
 
 
 def grammar_matcher(tokenizer: Any, gbnf: str) -> Any:

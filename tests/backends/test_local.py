@@ -135,11 +135,12 @@ def test_prepare_assembles_with_progress_then_loads(tmp_path: Path, monkeypatch:
 
     monkeypatch.setattr(local, "ensure_model", fake_ensure)
     monkeypatch.setattr(local, "load_llama", lambda *args: calls.append("load"))
+    monkeypatch.setattr(local, "grammar_tokenizer", lambda llama: calls.append("grammar tokenizer"))
     seen: list[tuple[str, int, int]] = []
     LocalBackend(LocalOptions(cache_dir=tmp_path)).prepare(
         lambda what, done, total: seen.append((what, done, total))
     )
-    assert calls == ["ensure", "load"]
+    assert calls == ["ensure", "load", "grammar tokenizer"]  # the tokenizer is built while loading
     assert seen[:2] == [("assembling the model", 50, 100), ("assembling the model", 100, 100)]
     assert seen[-1] == ("loading the model", 1, 1)
 

@@ -170,6 +170,7 @@ class LlamaModel:
         self.context = int(llama.n_ctx())
         self.vocabulary = int(llama.n_vocab())
         self.end_token = int(llama.token_eos())
+        self._reading = True
 
     @property
     def length(self) -> int:
@@ -185,14 +186,29 @@ class LlamaModel:
             kept += 1
         kept = min(kept, len(prompt) - 1)
         self.llama.n_tokens = kept  # llama.eval drops the context past this point before it decodes
+        self._reading = True
         return kept
 
     def evaluate(self, tokens: list[int]) -> np.ndarray:
-        """Feed ``tokens`` (one batch per n_batch) and return the logits after the last of them."""
+        """Feed ``tokens`` (one batch per n_batch) and return the logits after the last of them.
+
+        The prompt (the first batch after ``keep_prefix``) is read with the reading threads; forced
+        text while writing is fed with the generating threads only, so that a busy core beside the
+        answer stalls no batch of it (llama.cpp would give any batch of two tokens or more all cores).
+        """
         import llama_cpp
 
-        self.llama.eval(tokens)
-        pointer = llama_cpp.llama_get_logits_ith(self.llama._ctx.ctx, -1)
+        context = self.llama._ctx.ctx
+        params = self.llama.context_params
+        generate, read = int(params.n_threads), int(params.n_threads_batch)
+        if not self._reading:
+            llama_cpp.llama_set_n_threads(context, generate, generate)
+        try:
+            self.llama.eval(tokens)
+        finally:
+            llama_cpp.llama_set_n_threads(context, generate, read)
+        self._reading = False
+        pointer = llama_cpp.llama_get_logits_ith(context, -1)
         return np.ctypeslib.as_array(pointer, shape=(self.vocabulary,))
 
 

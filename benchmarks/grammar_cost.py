@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from trajadapt.backends.base import ChatRequest, Completion, Usage
-from trajadapt.backends.guided_decoding import LlamaModel, Sampling, decode, grammar_tokenizer, prompt_tokens
+from trajadapt.backends.guided_decoding import Sampling, decode_request
 from trajadapt.backends.local import LocalBackend, LocalOptions
 from trajadapt.model.case import Case, load_case
 from trajadapt.sandbox.runner import Sandbox
@@ -80,15 +80,7 @@ def write(backend: LocalBackend, request: ChatRequest, way: str, sampling: Sampl
         seconds = time.perf_counter() - started
         tokens = completion.usage.completion_tokens or 0
         return {"text": completion.text, "write_s": seconds, "tokens": tokens, "decodes": tokens}
-    messages = [{"role": m.role, "content": m.content} for m in request.messages]
-    decoded = decode(
-        LlamaModel(llama),
-        grammar_tokenizer(llama),
-        prompt_tokens(llama, messages),
-        request.grammar or "",
-        request.max_tokens,
-        sampling,
-    )
+    decoded = decode_request(llama, request, sampling)
     seconds = decoded.read_s + decoded.write_s
     return {
         "text": decoded.text,

@@ -25,6 +25,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
+from trajadapt.backends.base import ChatRequest
 from trajadapt.errors import BackendRejected, DependencyNotInstalled
 
 _tokenizers: weakref.WeakKeyDictionary[Any, Any] = weakref.WeakKeyDictionary()
@@ -271,6 +272,20 @@ def decode(
     )
 
 
+def decode_request(llama: Any, request: ChatRequest, sampling: Sampling | None = None) -> Decoded:
+    """Answer ``request`` (messages, grammar, token limit, sampling, ``on_text``) with a loaded ``Llama``."""
+    messages = [{"role": m.role, "content": m.content} for m in request.messages]
+    return decode(
+        LlamaModel(llama),
+        grammar_tokenizer(llama),
+        prompt_tokens(llama, messages),
+        request.grammar or "",
+        request.max_tokens,
+        sampling or Sampling(request.temperature, request.seed),
+        request.on_text,
+    )
+
+
 def _forced(matcher: Any) -> list[int]:
     """The tokens the grammar allows as the only continuation, consumed."""
     tokens: list[int] = matcher.compute_ff_tokens()
@@ -354,6 +369,7 @@ __all__ = [
     "LlamaModel",
     "Sampling",
     "decode",
+    "decode_request",
     "grammar_matcher",
     "grammar_tokenizer",
     "prompt_tokens",

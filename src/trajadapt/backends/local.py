@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any, Literal
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion, PrepareProgress, Usage
-from trajadapt.backends.guided_decoding import LlamaModel, Sampling, decode, grammar_tokenizer, prompt_tokens
+from trajadapt.backends.guided_decoding import decode_request, grammar_tokenizer
 from trajadapt.backends.prompt_state import PromptStateCache
 from trajadapt.errors import BackendRejected, BackendUnavailable, DependencyNotInstalled, EmptyCompletion
 from trajadapt.llm.model_file import MODEL_FILENAME, ensure_model
@@ -257,16 +257,7 @@ class LocalBackend(Backend):
 
     def _decode(self, llama: Any, request: ChatRequest) -> tuple[str, Usage, dict[str, Any]]:
         """The answer under the request's grammar with llguidance (``guided_decoding``)."""
-        messages = [{"role": m.role, "content": m.content} for m in request.messages]
-        decoded = decode(
-            LlamaModel(llama),
-            grammar_tokenizer(llama),
-            prompt_tokens(llama, messages),
-            request.grammar or "",
-            request.max_tokens,
-            Sampling(request.temperature, request.seed),
-            request.on_text,
-        )
+        decoded = decode_request(llama, request)
         usage = Usage(prompt_tokens=decoded.prompt_tokens, completion_tokens=decoded.written_tokens)
         details = {
             "prefill_s": decoded.read_s,

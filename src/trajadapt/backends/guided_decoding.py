@@ -4,7 +4,8 @@ llama.cpp's grammar sampler (in llama-cpp-python 0.3.36) checks every one of the
 tokens against the grammar before each token it writes, and feeds the tokens one at a time even where
 the grammar allows only one continuation (the JSON keys and ``t = get_trajectory()``). Here,
 at temperature 0, the most likely token is taken and only checked (``validate_tokens``); the
-vocabulary is masked only when the grammar refuses it, which gives the same token as masking first.
+vocabulary is masked only when the grammar refuses it, and the choice is the most likely token the
+grammar accepts, as llama.cpp's sampler makes it.
 Text the grammar forces (``compute_ff_tokens``) is then fed to the model as one batch: one decode
 for several tokens. Above temperature 0 every step is masked before sampling.
 
@@ -39,8 +40,9 @@ class Sampling:
     Attributes:
         temperature: 0 takes the most likely allowed token; above 0 samples from the allowed ones.
         seed: the sampling seed (temperature above 0).
-        check_first: at temperature 0, check the most likely token before masking the vocabulary
-            (the same token, found faster); off masks at every step, to compare.
+        check_first: at temperature 0, take the most likely token the grammar accepts (checked
+            first, the mask computed only when it is refused: llama.cpp's sampler's choice, found
+            faster); off takes the most likely token of llguidance's mask at every step, to compare.
         fast_forward: feed the text the grammar forces as one batch; off feeds it token by token
             as the model chooses it, to compare.
     """
@@ -310,11 +312,25 @@ class _Chooser:
             if self.sampling.check_first and matcher.validate_tokens([token]) == 1:
                 return token
             self.masked += 1
-            return int(np.argmax(self._masked(logits, matcher)))
+            best = int(np.argmax(self._masked(logits, matcher)))
+            return self._best_accepted(logits, matcher, best) if self.sampling.check_first else best
         self.masked += 1
         scaled = self._masked(logits, matcher) / self.sampling.temperature
         weights = np.exp(scaled - scaled.max())
         return int(self.random.choice(self.vocabulary, p=weights / weights.sum()))
+
+    @staticmethod
+    def _best_accepted(logits: np.ndarray, matcher: Any, best: int) -> int:
+        """The most likely token whose bytes the grammar accepts, as llama.cpp's sampler picks it.
+
+        llguidance's mask keeps only the canonical tokens of text the grammar forces; a token that
+        spells the same bytes otherwise is accepted too, and is taken where the model prefers it.
+        """
+        above = np.flatnonzero(logits > logits[best])
+        for token in above[np.argsort(-logits[above], kind="stable")]:
+            if matcher.validate_tokens([int(token)]) == 1:
+                return int(token)
+        return best
 
     def _masked(self, logits: np.ndarray, matcher: Any) -> np.ndarray:
         matcher.unsafe_compute_mask_ptr(self.bitmask.ctypes.data, self.bitmask.nbytes)

@@ -67,7 +67,7 @@ class ScriptedModel:
     def length(self) -> int:
         return len(self.tokens)
 
-    def keep_prefix(self, prompt: Sequence[int]) -> int:
+    def read(self, prompt: Sequence[int]) -> tuple[int, np.ndarray]:
         kept = 0
         for old, new in zip(self.tokens, prompt, strict=False):
             if old != new:
@@ -76,7 +76,7 @@ class ScriptedModel:
         kept = min(kept, len(prompt) - 1)
         del self.tokens[kept:]
         self.prompt_length = len(prompt)
-        return kept
+        return kept, self.evaluate(list(prompt[kept:]))
 
     def evaluate(self, tokens: list[int]) -> np.ndarray:
         self.batches.append(list(tokens))
@@ -123,8 +123,7 @@ def test_each_chosen_token_is_the_most_likely_one_the_grammar_accepts(seed: int)
     model = ScriptedModel(seed=seed)
     decode(model, tokenizer(), [5], GRAMMAR, 40)
     replay, matcher = ScriptedModel(seed=seed), grammar_matcher(tokenizer(), GRAMMAR)
-    replay.keep_prefix([5])
-    logits = replay.evaluate([5])
+    _, logits = replay.read([5])
     for batch in model.batches[1:]:
         accepted = [t for t in range(len(VOCABULARY)) if matcher.validate_tokens([t]) == 1]
         assert batch[0] == max(accepted, key=lambda t: logits[t])

@@ -62,7 +62,8 @@ class Decoded:
         prompt_tokens: tokens of the whole prompt; ``fresh_tokens`` of them were read (the rest cached).
         written_tokens: tokens of the answer; ``forced_tokens`` of them were fed as forced text.
         decodes: model evaluations while writing (single tokens and forced batches).
-        masked: steps where the model's first choice broke the grammar and the vocabulary was masked.
+        masked: steps where the vocabulary was masked (the model's first choice refused by the
+            grammar; every step above temperature 0).
         read_s: reading the fresh prompt tokens; ``write_s``: writing the answer.
     """
 
@@ -151,12 +152,15 @@ class DecodingModel(Protocol):
     vocabulary: int
     end_token: int
 
-    def keep_prefix(self, prompt: Sequence[int]) -> int:
-        """Keep the cached tokens that start ``prompt`` (never all of them); return how many are kept."""
+    def read(self, prompt: Sequence[int]) -> tuple[int, np.ndarray]:
+        """Keep the cached tokens that start ``prompt`` (never all) and read the rest.
+
+        Returns how many were kept and the logits after the prompt.
+        """
         ...
 
     def evaluate(self, tokens: list[int]) -> np.ndarray:
-        """Feed ``tokens`` after the kept ones (batched) and return the logits after the last of them."""
+        """Feed written ``tokens`` (batched) and return the logits after the last of them."""
         ...
 
     @property
@@ -173,15 +177,14 @@ class LlamaModel:
         self.context = int(llama.n_ctx())
         self.vocabulary = int(llama.n_vocab())
         self.end_token = int(llama.token_eos())
-        self._reading = True
 
     @property
     def length(self) -> int:
         """Tokens in the context now."""
         return int(self.llama.n_tokens)
 
-    def keep_prefix(self, prompt: Sequence[int]) -> int:
-        """Keep the context's tokens that start ``prompt`` (at least one token is left to read)."""
+    def read(self, prompt: Sequence[int]) -> tuple[int, np.ndarray]:
+        """Keep the context's tokens that start ``prompt`` (one at least is read), read the rest."""
         kept = 0
         for old, new in zip(self.llama.input_ids[: self.llama.n_tokens], prompt, strict=False):
             if old != new:
@@ -189,29 +192,33 @@ class LlamaModel:
             kept += 1
         kept = min(kept, len(prompt) - 1)
         self.llama.n_tokens = kept  # llama.eval drops the context past this point before it decodes
-        self._reading = True
-        return kept
+        self.llama.eval(list(prompt[kept:]))
+        return kept, self._logits()
 
     def evaluate(self, tokens: list[int]) -> np.ndarray:
-        """Feed ``tokens`` (one batch per n_batch) and return the logits after the last of them.
+        """Feed written ``tokens`` (one batch per n_batch) with the generating threads only.
 
-        The prompt (the first batch after ``keep_prefix``) is read with the reading threads; forced
-        text while writing is fed with the generating threads only, so that a busy core beside the
-        answer stalls no batch of it (llama.cpp would give any batch of two tokens or more all cores).
+        llama.cpp would give any batch of two tokens or more the reading threads (every core), and
+        a busy core beside the answer would then stall each batch of forced text.
         """
         import llama_cpp
 
         context = self.llama._ctx.ctx
-        params = self.llama.context_params
-        generate, read = int(params.n_threads), int(params.n_threads_batch)
-        if not self._reading:
-            llama_cpp.llama_set_n_threads(context, generate, generate)
+        generate, read = (
+            int(self.llama.context_params.n_threads),
+            int(self.llama.context_params.n_threads_batch),
+        )
+        llama_cpp.llama_set_n_threads(context, generate, generate)
         try:
             self.llama.eval(tokens)
         finally:
             llama_cpp.llama_set_n_threads(context, generate, read)
-        self._reading = False
-        pointer = llama_cpp.llama_get_logits_ith(context, -1)
+        return self._logits()
+
+    def _logits(self) -> np.ndarray:
+        import llama_cpp
+
+        pointer = llama_cpp.llama_get_logits_ith(self.llama._ctx.ctx, -1)
         return np.ctypeslib.as_array(pointer, shape=(self.vocabulary,))
 
 
@@ -240,8 +247,7 @@ def decode(
             f"({model.context}); start a new session, or give the model a larger context with -o n_ctx 8192"
         )
     started = time.perf_counter()
-    kept = model.keep_prefix(prompt)
-    logits = model.evaluate(list(prompt[kept:]))
+    kept, logits = model.read(prompt)
     read_s = time.perf_counter() - started
     chooser = _Chooser(model.vocabulary, sampling)
     written: list[int] = []

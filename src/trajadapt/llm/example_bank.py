@@ -13,7 +13,7 @@ import json
 import math
 import re
 from collections import Counter
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -98,15 +98,31 @@ def terms(text: str, leave_out: Iterable[str] = ()) -> list[str]:
 
 
 class ExampleBank:
-    """Examples and their BM25 index."""
+    """Examples and their BM25 index.
 
-    def __init__(self, examples: Sequence[Example]) -> None:
+    ``meanings`` adds tokens of its own to each instruction's stems, read the same way from the
+    examples and from the query (``memory.meaning``: what the words ask, whatever the words).
+    """
+
+    def __init__(
+        self, examples: Sequence[Example], meanings: Callable[[str], list[str]] | None = None
+    ) -> None:
         self.examples = tuple(examples)
-        self._documents = [Counter(terms(e.instruction, e.object_names)) for e in self.examples]
+        self._meanings = meanings
+        self._documents = [Counter(self.terms(e.instruction, e.object_names)) for e in self.examples]
         self._average_length = sum(sum(d.values()) for d in self._documents) / max(len(self._documents), 1)
         frequency: Counter[str] = Counter(term for document in self._documents for term in document)
         count = len(self._documents)
         self._idf = {term: math.log((count - df + 0.5) / (df + 0.5) + 1.0) for term, df in frequency.items()}
+
+    def terms(self, text: str, leave_out: Iterable[str] = ()) -> list[str]:
+        """The index terms of ``text``: its stems and pairs (``terms``), then its meaning tokens."""
+        return terms(text, leave_out) + (self._meanings(text) if self._meanings else [])
+
+    def ranked(self, text: str, object_names: Iterable[str] = ()) -> list[int]:
+        """Every example's index, best for ``text`` first (ties: bank order)."""
+        query = self.terms(text, object_names)
+        return sorted(range(len(self.examples)), key=lambda i: (-self.score(query, i), i))
 
     def score(self, query: Sequence[str], index: int) -> float:
         """BM25 score of example ``index`` for the query terms."""
@@ -124,9 +140,7 @@ class ExampleBank:
         """The ``k`` best examples for ``instruction``, best first (ties: bank order)."""
         if k <= 0:
             return []
-        query = terms(instruction, object_names)
-        ranked = sorted(range(len(self.examples)), key=lambda i: (-self.score(query, i), i))
-        return [self.examples[i] for i in ranked[:k]]
+        return [self.examples[i] for i in self.ranked(instruction, object_names)[:k]]
 
 
 def read_examples(lines: Iterable[str]) -> list[Example]:

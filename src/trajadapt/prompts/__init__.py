@@ -15,7 +15,7 @@ import numpy as np
 
 from trajadapt.backends.base import ChatMessage
 from trajadapt.llm.example_bank import Example
-from trajadapt.memory import RememberedExample, choose_examples
+from trajadapt.memory import RememberedExample, Retrieval, choose_examples
 from trajadapt.model.case import Case
 from trajadapt.model.geometry import AxisConvention
 from trajadapt.model.trajectory import Trajectory
@@ -98,16 +98,20 @@ def list_waypoints(trajectory: Trajectory) -> str:
 
 
 def chosen_examples(
-    case: Case, mode: str, count: int, remembered: Sequence[RememberedExample] = ()
+    case: Case,
+    mode: str,
+    count: int,
+    remembered: Sequence[RememberedExample] = (),
+    by: Retrieval = "clauses",
 ) -> tuple[Example, ...]:
     """The examples the first prompt shows, best first (none in paper mode, whose prompt is fixed).
 
     They are the ``count`` nearest to the instruction from the shipped bank and the user's
-    ``remembered`` answers (``memory.choose_examples``).
+    ``remembered`` answers, chosen ``by`` clauses or by words (``memory.choose_examples``).
     """
     if mode != "skills":
         return ()
-    return tuple(choose_examples(case.instruction, count, case.scene.names(), remembered))
+    return tuple(choose_examples(case.instruction, count, case.scene.names(), remembered, by))
 
 
 def render_examples(chosen: Sequence[Example]) -> str:

@@ -64,7 +64,7 @@ class Conversation:
         self.on_progress = on_progress or (lambda _message: None)
         remembered = memory.examples() if memory is not None else []
         s = self.settings
-        chosen = chosen_examples(case, s.mode, s.examples, remembered)
+        chosen = chosen_examples(case, s.mode, s.examples, remembered, s.retrieval)
         self.messages: list[ChatMessage] = list(
             first_messages(case, s.axes, s.mode, s.waypoints_in_prompt, chosen=chosen)
         )

@@ -7,6 +7,7 @@ from typing import Any
 
 from trajadapt import __version__
 from trajadapt.checks.constraints import Constraints
+from trajadapt.memory import Retrieval
 from trajadapt.model.geometry import AXIS_CONVENTIONS, AxisConvention
 from trajadapt.settings import Settings
 
@@ -35,6 +36,7 @@ class SessionSettings:
     waypoints_in_prompt: bool = False
     grammar: bool = True
     examples: int = 3
+    retrieval: Retrieval = "clauses"
     read_against_words: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = False

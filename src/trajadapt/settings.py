@@ -54,9 +54,9 @@ class Settings:
             far waypoints moved); False sends it back for repair instead.
         grammar: in skills mode, constrain a local model's answer to the scene's answer grammar.
         examples: how many worked examples nearest to the instruction go into the prompt (skills mode).
-        retrieval: how those examples are chosen: ``clauses`` (the best for each clause of the
-            instruction first, ranked by word stems and by what the words ask: ``memory.recall``)
-            or ``words`` (by the whole instruction's word stems only).
+        retrieval: how those examples are chosen: ``words`` (by the whole instruction's word
+            stems) or ``clauses`` (the best for each clause of the instruction first, ranked by
+            word stems and by what the words ask: ``memory.recall``; measured and left opt-in).
         read_against_words: read the answer against the user's words (``trajadapt.readers``, skills
             mode): leave out steps of a topic the words never mention, replace amounts they never
             give, and steps that do something other than what their clause asks, each with a review
@@ -88,7 +88,7 @@ class Settings:
     project: bool = True
     grammar: bool = True
     examples: int = _bounded(3, 0, 12)
-    retrieval: Literal["clauses", "words"] = "clauses"
+    retrieval: Literal["words", "clauses"] = "words"
     read_against_words: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = False

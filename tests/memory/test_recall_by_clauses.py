@@ -1,18 +1,24 @@
-"""Examples chosen by clauses and by what the words ask: every clause of a compound instruction gets
-its own example, the same request in other words is read the same, and ``by="words"`` is the old
-ranking exactly."""
+"""Examples chosen by clauses and by what the words ask (``retrieval=clauses``, opt-in): every clause
+of a compound instruction gets its own example, the same request in other words is read the same,
+and ``by="words"`` (the default) is the plain BM25 ranking exactly."""
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from trajadapt.backends.scripted import ScriptedBackend
 from trajadapt.clauses.split import split_clauses
 from trajadapt.llm.example_bank import default_bank
 from trajadapt.memory import choose_examples
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.memory.recall import _bank
+from trajadapt.model.case import Case
+from trajadapt.sandbox.runner import Sandbox
+from trajadapt.session import AdaptationSession, SessionSettings
 
 COMPOUND = [
     ("slow down near the crate and move a bit upwards", ["crate"]),
@@ -27,7 +33,7 @@ COMPOUND = [
 def test_each_clause_of_a_compound_instruction_gets_its_best_example(words: str, names: list[str]) -> None:
     clauses = split_clauses(words, names)
     assert len(clauses) == 2
-    chosen = choose_examples(words, 3, names)
+    chosen = choose_examples(words, 3, names, by="clauses")
     bank = _bank("clauses")
     for clause in clauses:
         assert bank.examples[bank.ranked(clause, names)[0]] in chosen, clause
@@ -37,7 +43,10 @@ def test_each_clause_of_a_compound_instruction_gets_its_best_example(words: str,
 def test_the_chosen_are_shown_in_their_order_for_the_whole_instruction(words: str, names: list[str]) -> None:
     bank = _bank("clauses")
     order = bank.ranked(words, names)
-    positions = [order.index(bank.examples.index(example)) for example in choose_examples(words, 3, names)]
+    positions = [
+        order.index(bank.examples.index(example))
+        for example in choose_examples(words, 3, names, by="clauses")
+    ]
     assert positions == sorted(positions)
 
 
@@ -63,3 +72,17 @@ def test_two_wordings_of_one_request_share_its_meaning(first: str, second: str, 
 def test_a_pace_particle_is_no_direction() -> None:
     assert asked_meanings("slow down near the lamp") == ["@slower"]
     assert "@up" not in asked_meanings("speed up in the middle")
+
+
+def test_the_setting_chooses_the_first_prompts_examples(simple_case: Case, sandbox: Sandbox) -> None:
+    words = "slow down near the box and move a bit upwards"
+    case = replace(simple_case, instruction=words)
+    prompts = {}
+    for by in ("words", "clauses"):
+        settings = SessionSettings(retrieval=by)
+        session = AdaptationSession(case, ScriptedBackend(answers=()), sandbox, settings)
+        expected = choose_examples(words, settings.examples, case.scene.names(), by=by)
+        assert session.messages[1].content.count("Instruction: ") == len(expected)
+        assert all(example.instruction in session.messages[1].content for example in expected)
+        prompts[by] = session.messages[1].content
+    assert prompts["words"] != prompts["clauses"]

@@ -7,12 +7,15 @@ words in another scene) ranks before everything else: it is the user's own answe
 
 How the rest are chosen is ``by``:
 
-- ``"clauses"`` (the default): the index also holds what the words ask (``meaning.asked_meanings``),
+- ``"words"`` (the default): BM25 over the whole instruction's word stems only.
+- ``"clauses"``: the index also holds what the words ask (``meaning.asked_meanings``),
   and an instruction of several clauses (``clauses.split_clauses``) first gets the best example of
   each clause, then the best for the whole; the chosen are shown in the order of their score for the
   whole instruction. Ranked by the whole alone, the clause with the rarest words takes every place
   ("move the start 0.2 right, and also raise the path slightly" showed no example going up).
-- ``"words"``: BM25 over the whole instruction's word stems only (before 2026-11-25).
+  Measured on 2026-11-25 (docs/benchmarks.md, "Issue #24, session 11"): 5 more of 106 blind
+  paraphrases passed, 6 fewer of 111 dev cases in their original words (both halves lost), so it
+  is not the default.
 """
 
 from __future__ import annotations
@@ -27,8 +30,8 @@ from trajadapt.memory.bank import RememberedExample
 from trajadapt.memory.meaning import asked_meanings
 
 NEAR = 0.5
-Retrieval = Literal["clauses", "words"]
-RETRIEVALS: tuple[Retrieval, ...] = ("clauses", "words")
+Retrieval = Literal["words", "clauses"]
+RETRIEVALS: tuple[Retrieval, ...] = ("words", "clauses")
 
 
 def choose_examples(
@@ -36,7 +39,7 @@ def choose_examples(
     k: int,
     names: Sequence[str],
     remembered: Sequence[RememberedExample] = (),
-    by: Retrieval = "clauses",
+    by: Retrieval = "words",
 ) -> list[Example]:
     """The ``k`` examples for ``instruction``, best first: near remembered matches, then ``by``."""
     if k <= 0:

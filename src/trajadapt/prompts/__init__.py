@@ -102,7 +102,7 @@ def chosen_examples(
     mode: str,
     count: int,
     remembered: Sequence[RememberedExample] = (),
-    by: Retrieval = "clauses",
+    by: Retrieval = "words",
 ) -> tuple[Example, ...]:
     """The examples the first prompt shows, best first (none in paper mode, whose prompt is fixed).
 

@@ -36,7 +36,7 @@ class SessionSettings:
     waypoints_in_prompt: bool = False
     grammar: bool = True
     examples: int = 3
-    retrieval: Retrieval = "clauses"
+    retrieval: Retrieval = "words"
     read_against_words: bool = True
     repair_contradictions: bool = False
     clause_steps: bool = False

@@ -15,7 +15,7 @@ from trajadapt.clauses.split import split_clauses
 from trajadapt.llm.example_bank import default_bank
 from trajadapt.memory import choose_examples
 from trajadapt.memory.meaning import asked_meanings
-from trajadapt.memory.recall import _bank
+from trajadapt.memory.recall import shipped_bank
 from trajadapt.model.case import Case
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
@@ -34,14 +34,14 @@ def test_each_clause_of_a_compound_instruction_gets_its_best_example(words: str,
     clauses = split_clauses(words, names)
     assert len(clauses) == 2
     chosen = choose_examples(words, 3, names, by="clauses")
-    bank = _bank("clauses")
+    bank = shipped_bank("clauses")
     for clause in clauses:
         assert bank.examples[bank.ranked(clause, names)[0]] in chosen, clause
 
 
 @pytest.mark.parametrize(("words", "names"), COMPOUND)
 def test_the_chosen_are_shown_in_their_order_for_the_whole_instruction(words: str, names: list[str]) -> None:
-    bank = _bank("clauses")
+    bank = shipped_bank("clauses")
     order = bank.ranked(words, names)
     positions = [
         order.index(bank.examples.index(example))

@@ -45,8 +45,9 @@ def choose_examples(
     if k <= 0:
         return []
     own = [example.as_example(instruction, names) for example in remembered]
-    bank = _bank(by) if not own else ExampleBank([*own, *default_bank().examples], _meanings(by))
-    near = {index for index, example in enumerate(own) if _near(terms(instruction, names), example, names)}
+    bank = shipped_bank(by) if not own else ExampleBank([*own, *default_bank().examples], _meanings(by))
+    query = terms(instruction, names)
+    near = {index for index, example in enumerate(own) if _near(query, example, names)}
     whole = bank.ranked(instruction, names)
     chosen = sorted(near, key=whole.index)
     if by == "clauses":
@@ -72,7 +73,7 @@ def _best_per_clause(
 
 
 @lru_cache(maxsize=len(RETRIEVALS))
-def _bank(by: Retrieval) -> ExampleBank:
+def shipped_bank(by: Retrieval) -> ExampleBank:
     """The shipped bank, indexed for ``by`` (built once per process)."""
     return ExampleBank(default_bank().examples, _meanings(by)) if by == "clauses" else default_bank()
 

@@ -43,16 +43,23 @@ REACH_MARGIN = 0.9  # waypoints beyond this share of the outer reach (or inside 
 
 @dataclass(frozen=True)
 class Projection:
-    """The projected trajectory and what changed: per constraint, and what is still broken."""
+    """The projected trajectory and what changed: per constraint, and what is still broken.
+
+    ``as_original``: limits the original path itself broke at its start or goal, which the
+    projection left as they were (the code did not move that end).
+    """
 
     trajectory: Array
     largest_move: float
     remaining: tuple[str, ...]
     moves: tuple[ConstraintMove, ...] = ()
+    as_original: tuple[str, ...] = ()
 
     def describe(self) -> str:
         """One line for the reviewer."""
         tail = f"; still violated: {'; '.join(self.remaining)}" if self.remaining else ""
+        if self.as_original:
+            tail += f"; left as the original has them at its start or goal: {'; '.join(self.as_original)}"
         return f"projected onto the constraints: waypoints moved by at most {self.largest_move:.4g}{tail}"
 
 
@@ -73,34 +80,66 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     projected[:, :3] = compact[runs, :3]
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
-    remaining = tuple(v.message for v in find_violations(projected, original, scene, constraints))
+    left = find_violations(projected, original, scene, constraints)
+    held = _held_as_original(projected, original, scene, constraints)
+    remaining = tuple(v.message for v in left if v.key not in held)
+    as_original = tuple(v.message for v in left if v.key in held)
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
     broken = new_violations(trajectory, original, scene, constraints)
-    return Projection(projected, largest, remaining, constraint_moves(trajectory, projected, broken))
+    moves = constraint_moves(trajectory, projected, broken)
+    return Projection(projected, largest, remaining, moves, as_original)
 
 
 def _holding_kept_ends(
     trajectory: Array, original: Array, scene: Scene, constraints: Constraints
 ) -> Constraints:
-    """Also hold the start / goal where the code left them (at the original's) and no limit is broken.
+    """Also hold the start / goal where the code left them (at the original's), unless it broke a limit there.
 
     The smoothing would otherwise move an end nobody asked to move (a curve made rounder, then lifted
-    back above the floor, started 0.04 away from where it started).
+    back above the floor, started 0.04 away from where it started). A limit the original itself
+    broke at that end (a path that starts below its floor, or beside an object closer than the
+    clearance) is left alone: the projection is for what the code broke.
     """
-    broken = {
-        i % len(trajectory)
-        for v in find_violations(trajectory, original, scene, constraints)
-        for i in v.waypoints
-    }
+    inherited = _broken_at_ends(original, original, scene, constraints)
+    broken = {end for _, end in _broken_at_ends(trajectory, original, scene, constraints) - inherited}
     tolerance = 1e-9 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
     kept = [
         float(np.linalg.norm(trajectory[index, :3] - original[index, :3])) <= tolerance
-        and index % len(trajectory) not in broken
+        and index not in broken
         for index in (0, -1)
     ]
     return replace(
         constraints, keep_start=constraints.keep_start or kept[0], keep_goal=constraints.keep_goal or kept[1]
     )
+
+
+def _held_as_original(projected: Array, original: Array, scene: Scene, constraints: Constraints) -> set[str]:
+    """The limits ``projected`` breaks only at an end it keeps where the original broke them too."""
+    inherited = {
+        (key, end)
+        for key, end in _broken_at_ends(original, original, scene, constraints)
+        if np.allclose(projected[end, :3], original[end, :3])
+    }
+    held = set()
+    for violation in find_violations(projected, original, scene, constraints):
+        ends = {0 if i % len(projected) == 0 else -1 if i % len(projected) == len(projected) - 1 else None
+                for i in violation.waypoints}  # fmt: skip
+        if ends and None not in ends and all((violation.key, end) in inherited for end in ends):
+            held.add(violation.key)
+    return held
+
+
+def _broken_at_ends(
+    trajectory: Array, original: Array, scene: Scene, constraints: Constraints
+) -> set[tuple[str, int]]:
+    """(limit, end) for each limit ``trajectory`` breaks at its start (end 0) or its goal (end -1)."""
+    last = len(trajectory) - 1
+    return {
+        (v.key, 0 if i % len(trajectory) == 0 else -1)
+        for v in find_violations(trajectory, original, scene, constraints)
+        for i in v.waypoints
+        if i % len(trajectory) in (0, last)
+    }
 
 
 def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:

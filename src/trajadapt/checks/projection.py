@@ -81,7 +81,7 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
     left = find_violations(projected, original, scene, constraints)
-    held = _held_as_original(projected, original, scene, constraints)
+    held = _held_as_original(left, projected, original, scene, constraints)
     remaining = tuple(v.message for v in left if v.key not in held)
     as_original = tuple(v.message for v in left if v.key in held)
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
@@ -113,17 +113,18 @@ def _holding_kept_ends(
     )
 
 
-def _held_as_original(projected: Array, original: Array, scene: Scene, constraints: Constraints) -> set[str]:
-    """The limits ``projected`` breaks only at an end it keeps where the original broke them too."""
+def _held_as_original(
+    left: list[Violation], projected: Array, original: Array, scene: Scene, constraints: Constraints
+) -> set[str]:
+    """The limits of ``left`` broken only at ends of ``projected`` kept where the original broke them too."""
     inherited = {
         (key, end)
         for key, end in _broken_at_ends(original, original, scene, constraints)
         if np.allclose(projected[end, :3], original[end, :3])
     }
     held = set()
-    for violation in find_violations(projected, original, scene, constraints):
-        ends = {0 if i % len(projected) == 0 else -1 if i % len(projected) == len(projected) - 1 else None
-                for i in violation.waypoints}  # fmt: skip
+    for violation in left:
+        ends = {_end_of(i, len(projected)) for i in violation.waypoints}
         if ends and None not in ends and all((violation.key, end) in inherited for end in ends):
             held.add(violation.key)
     return held
@@ -133,13 +134,18 @@ def _broken_at_ends(
     trajectory: Array, original: Array, scene: Scene, constraints: Constraints
 ) -> set[tuple[str, int]]:
     """(limit, end) for each limit ``trajectory`` breaks at its start (end 0) or its goal (end -1)."""
-    last = len(trajectory) - 1
     return {
-        (v.key, 0 if i % len(trajectory) == 0 else -1)
+        (v.key, end)
         for v in find_violations(trajectory, original, scene, constraints)
         for i in v.waypoints
-        if i % len(trajectory) in (0, last)
+        if (end := _end_of(i, len(trajectory))) is not None
     }
+
+
+def _end_of(index: int, count: int) -> int | None:
+    """0 for the first of ``count`` waypoints, -1 for the last (negative indices too), else None."""
+    position = index % count
+    return 0 if position == 0 else -1 if position == count - 1 else None
 
 
 def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:

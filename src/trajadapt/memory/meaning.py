@@ -2,12 +2,13 @@
 
 BM25 over word stems finds an example only through shared words, so a reworded instruction ("keep a
 larger distance from the soap") misses the examples of its own request, and a particle or a place
-word pulls in another's ("speed up" finds "raise the middle section"). Here
-each clause is read with the product's own readers of words (the ones the checks use: a pace
-asked faster or slower, the directions the path should move in, closer or further from an object,
-the parts and positions of the path it speaks of) and each reading becomes a token such as
-``@faster``, ``@up`` or ``@away``. Examples and instructions are read the same way, so two wordings
-that the readers understand alike meet on these tokens whatever their verbs.
+word pulls in another's ("speed up" finds "raise the middle section"). Here each clause is read
+with the product's own readers of words (the ones the checks use: a pace asked faster or slower,
+the directions the path should move in, closer or further from an object, the parts and positions
+of the path it speaks of) and each reading becomes a token such as ``@faster``, ``@up`` or
+``@away``. Examples and instructions are read the same way, so two wordings that the readers
+understand alike meet on these tokens whatever their verbs. Used by ``retrieval=clauses``
+(``recall``), which is opt-in: see docs/benchmarks.md, "Issue #24, session 11".
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ def asked_meanings(text: str) -> list[str]:
 
 
 def _clause_meanings(clause: str) -> list[str]:
+    """The meaning tokens of one clause: its pace, directions, closer/away, parts and positions."""
     lowered = clause.lower()
     found = []
     if asks_pace(clause):

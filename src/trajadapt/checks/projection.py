@@ -72,7 +72,8 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     Raises:
         DependencyNotInstalled: osqp or scipy is missing.
     """
-    constraints = _holding_kept_ends(trajectory, original, scene, constraints)
+    inherited = _broken_at_ends(original, original, scene, constraints)
+    constraints = _holding_kept_ends(trajectory, original, scene, constraints, inherited)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
     compact = _project_distinct(trajectory[firsts], original, scene, constraints)
@@ -81,7 +82,7 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
     left = find_violations(projected, original, scene, constraints)
-    held = _held_as_original(left, projected, original, scene, constraints)
+    held = _held_as_original(left, len(projected), inherited, constraints)
     remaining = tuple(v.message for v in left if v.key not in held)
     as_original = tuple(v.message for v in left if v.key in held)
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
@@ -91,16 +92,20 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
 
 
 def _holding_kept_ends(
-    trajectory: Array, original: Array, scene: Scene, constraints: Constraints
+    trajectory: Array,
+    original: Array,
+    scene: Scene,
+    constraints: Constraints,
+    inherited: set[tuple[str, int]],
 ) -> Constraints:
     """Also hold the start / goal where the code left them (at the original's), unless it broke a limit there.
 
     The smoothing would otherwise move an end nobody asked to move (a curve made rounder, then lifted
     back above the floor, started 0.04 away from where it started). A limit the original itself
     broke at that end (a path that starts below its floor, or beside an object closer than the
-    clearance) is left alone: the projection is for what the code broke.
+    clearance; ``inherited``, from ``_broken_at_ends`` of the original) is left alone: the projection
+    is for what the code broke.
     """
-    inherited = _broken_at_ends(original, original, scene, constraints)
     broken = {end for _, end in _broken_at_ends(trajectory, original, scene, constraints) - inherited}
     tolerance = 1e-9 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
     kept = [
@@ -114,18 +119,18 @@ def _holding_kept_ends(
 
 
 def _held_as_original(
-    left: list[Violation], projected: Array, original: Array, scene: Scene, constraints: Constraints
+    left: list[Violation], count: int, inherited: set[tuple[str, int]], constraints: Constraints
 ) -> set[str]:
-    """The limits of ``left`` broken only at ends of ``projected`` kept where the original broke them too."""
-    inherited = {
-        (key, end)
-        for key, end in _broken_at_ends(original, original, scene, constraints)
-        if np.allclose(projected[end, :3], original[end, :3])
-    }
+    """The limits of ``left`` broken only at ends where the original broke them too.
+
+    Only the ends the projection kept at the original's position count (``constraints.keep_start``
+    / ``keep_goal``); ``count`` is the number of waypoints ``left`` was measured on.
+    """
+    kept = {end for end, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)) if keep}
     held = set()
     for violation in left:
-        ends = {_end_of(i, len(projected)) for i in violation.waypoints}
-        if ends and None not in ends and all((violation.key, end) in inherited for end in ends):
+        ends = {_end_of(i, count) for i in violation.waypoints}
+        if ends and ends <= kept and all((violation.key, end) in inherited for end in ends):
             held.add(violation.key)
     return held
 

@@ -11,20 +11,16 @@ Run: .venv/bin/python benchmarks/paraphrase_gap.py ORIGINALS_OUT PARAPHRASES_OUT
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
+
+from compare_runs import load_outcomes  # benchmarks/, beside this script
 
 from trajadapt.bench.halves import HALVES, half_of
 
 
 def passed_cases(folder: Path) -> dict[str, bool]:
-    """Whether each judged case under ``folder`` passed, keyed by its path relative to the folder."""
-    found = {}
-    for path in sorted(folder.rglob("*.result.json")):
-        evaluation = json.loads(path.read_text(encoding="utf-8")).get("evaluation") or {}
-        if evaluation.get("judged"):
-            found[str(path.relative_to(folder)).removesuffix(".result.json")] = bool(evaluation.get("passed"))
-    return found
+    """Whether each judged case under ``folder`` passed (``compare_runs.load_outcomes``)."""
+    return {key: outcome.passed for key, outcome in load_outcomes(folder, first_answers=False).items()}
 
 
 def gap_lines(originals: dict[str, bool], reworded: dict[str, bool]) -> list[str]:

@@ -11,7 +11,6 @@ while the speed rose, "left" while the path moved right) and flags them for the 
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
 
@@ -22,7 +21,7 @@ from trajadapt.checks.constraints import ConstraintMove
 from trajadapt.model.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
 from trajadapt.model.scene import SceneObject
 from trajadapt.model.trajectory import Trajectory
-from trajadapt.readers.words import moving_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, moving_directions
 
 Array = npt.NDArray[np.float64]
 NEAR_SHARE = 0.25  # the share of waypoints nearest an object whose speed counts as "near" it
@@ -176,12 +175,6 @@ def measure_effect(
         duration_after=_duration(after),
         objects=tuple(_object_effect(obj, before, after) for obj in objects),
     )
-
-
-SLOWER = re.compile(r"\b(slow\w*|reduce the speed|decrease the speed|lower the speed|decelerat\w*)")
-FASTER = re.compile(r"\b(fast\w*|quick\w*|increase the speed|speed up|accelerat\w*|hurr\w*)")
-CLOSER = re.compile(r"\b(closer|nearer|approach\w*|smaller distance|towards?)\b")
-AWAY = re.compile(r"\b(away|further|farther|bigger distance|larger distance|avoid\w*|clear of)\b")
 
 
 def contradictions(instruction: str, effect: Effect, axes: Axes | None = None) -> list[str]:

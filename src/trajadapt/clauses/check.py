@@ -15,9 +15,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.checks.effect import AWAY, CLOSER, NOTICEABLE, Effect, contradictions
+from trajadapt.checks.effect import NOTICEABLE, Effect, contradictions
 from trajadapt.model.geometry import Axes
-from trajadapt.readers.words import asked_kinds, moving_directions, names_in
+from trajadapt.readers.words import AWAY, CLOSER, asked_kinds, moving_directions, names_in
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:

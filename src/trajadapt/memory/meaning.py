@@ -13,10 +13,9 @@ understand alike meet on these tokens whatever their verbs. Used by ``retrieval=
 
 from __future__ import annotations
 
-from trajadapt.checks.effect import AWAY, CLOSER
 from trajadapt.clauses.grammar import said_places
 from trajadapt.clauses.split import split_clauses
-from trajadapt.readers.words import FASTER, SLOWER, asks_pace, moving_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace, moving_directions
 
 MARK = "@"
 """What starts a meaning token (no word stem does)."""

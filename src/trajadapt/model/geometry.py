@@ -23,6 +23,17 @@ DIRECTION_SYNONYMS = {
     "lower": "down", "bottom": "down", "below": "down",
 }  # fmt: skip
 
+DIRECTION_VERBS = {
+    "rise": "up", "rises": "up", "rising": "up", "rose": "up", "climb": "up", "climbs": "up",
+    "climbing": "up", "ascend": "up", "ascends": "up", "ascending": "up", "ascent": "up", "lift": "up",
+    "lifts": "up", "lifting": "up", "raise": "up", "raises": "up", "raising": "up", "elevate": "up",
+    "elevates": "up", "elevating": "up", "descend": "down", "descends": "down", "descending": "down",
+    "descent": "down", "sink": "down", "sinks": "down", "sinking": "down", "dip": "down", "dips": "down",
+    "dipping": "down",
+}  # fmt: skip
+"""Verbs that name a direction of motion ("climb a little" is up). Words of the user's only: a skill's
+direction argument takes ``DIRECTION_SYNONYMS``, so ``shift(t, 'climb')`` stays an error."""
+
 
 @dataclass(frozen=True)
 class Axes:

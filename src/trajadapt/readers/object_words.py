@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.words import (
+    AWAY,
+    CLOSER,
     FASTER,
     NUMBER_TEXT,
     PLACE_WORDS,
@@ -22,13 +24,6 @@ from trajadapt.readers.words import (
     names_in,
 )
 
-CLOSER = re.compile(
-    r"\b(?:closer|nearer|approach\w*|toward[s]?|(?:smaller|shorter|less(?:er)?|reduced?) distance)\b", re.I
-)
-AWAY = re.compile(
-    r"\b(?:away|further|farther|(?:greater|larger|bigger|more|increased?|wider) (?:distance|berth|space))\b",
-    re.I,
-)
 NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
 KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from trajadapt.model.geometry import DIRECTION_SYNONYMS
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 from trajadapt.skills.speed import SPEED_FACTORS
 
@@ -56,9 +56,14 @@ PATH_WORDS = re.compile(
 
 
 PACE_PHRASES = re.compile(
-    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b", re.I
+    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b"
+    r"|\bpick(?:s|ed|ing)?\s+up\s+(?:the\s+|your\s+|its\s+)?(?:pace|speed)\b",
+    re.I,
 )
-"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up")."""
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up", "pick up the pace")."""
+
+SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
+"""A speed as the object of a verb ("raise the speed", "lower your pace")."""
 
 
 def moving_directions(words: str) -> set[str]:
@@ -75,10 +80,30 @@ def asked_kinds(words: str) -> frozenset[str]:
 
 
 FASTER = re.compile(
-    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed up)\b", re.I
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up"
+    rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{SPEED_NOUN}"
+    rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN})",
+    re.I,
 )
-SLOWER = re.compile(r"\b(?:slow\w*|decelerat\w*|leisure\w*)\b", re.I)
-"""Word stems that ask for more speed, and for less."""
+SLOWER = re.compile(
+    r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*"
+    rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{SPEED_NOUN})",
+    re.I,
+)
+"""What asks for more speed, and for less: speed words, and a verb or adjective of more or less before
+a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
+
+CLOSER = re.compile(
+    r"\b(?:closer|nearer|approach\w*|toward[s]?|hug\w*"
+    r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance))\b",
+    re.I,
+)
+AWAY = re.compile(
+    r"\b(?:away|further|farther|avoid\w*|clear of"
+    r"|(?:greater|larger|bigger|more|increased?|wider|extra) (?:distance|berth|space|room|gap|clearance))\b",
+    re.I,
+)
+"""What asks to come closer to an object, and to keep further from it."""
 
 
 def whole_words(text: str) -> str:
@@ -96,9 +121,18 @@ def names_in(text: str, names: Iterable[str]) -> list[str]:
     return [name for name in names if name and whole_words(name) in words]
 
 
+OF_SPEED = re.compile(rf"\b[a-z]+\s+{SPEED_NOUN}", re.I)
+"""A word before a speed: "higher speed" and "raise the pace" name no direction."""
+
+
 def said_directions(words: str) -> set[str]:
-    """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back')."""
-    return {DIRECTION_SYNONYMS[w] for w in re.findall(r"[a-z]+", words.lower()) if w in DIRECTION_SYNONYMS}
+    """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back', 'climb' -> 'up')."""
+    found = re.findall(r"[a-z]+", OF_SPEED.sub(" ", words.lower()))
+    return {
+        DIRECTION_SYNONYMS.get(w) or DIRECTION_VERBS[w]
+        for w in found
+        if w in DIRECTION_SYNONYMS or w in DIRECTION_VERBS
+    }
 
 
 def longest_names(named: list[str]) -> list[str]:

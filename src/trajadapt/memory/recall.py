@@ -1,9 +1,14 @@
 """A request's worked examples, from the user's remembered answers and the shipped bank.
 
 Both banks are ranked together with the same BM25 (``example_bank``), after the remembered ones are
-given the new scene's names. A remembered example that is a near match of the instruction (the word
-stems both share are at least ``NEAR`` of each side's: the same request in other words, or the same
-words in another scene) ranks before everything else: it is the user's own answer to this request.
+given the new scene's names. A remembered example that is a near match of the instruction ranks
+before everything else: it is the user's own answer to this request. Near means it asks the same
+(``_request``: the same meaning tokens of ``meaning.asked_meanings``, as many named objects, the same
+numbers, an amount word as strong), so "get nearer to the husky and climb a little" meets "go
+slightly upwards and walk closer to the husky" whatever the verbs, and "keep more distance" never
+meets "keep less", nor "much closer" "slightly closer". Where the readers find no meaning in the
+instruction, near falls back to words: the stems both share are at least ``NEAR`` of each side's
+(the same words in another scene). Measured in docs/benchmarks.md, "Issue #28, session 12".
 
 How the rest are chosen is ``by``:
 
@@ -28,8 +33,13 @@ from trajadapt.clauses.split import split_clauses
 from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, terms
 from trajadapt.memory.bank import RememberedExample
 from trajadapt.memory.meaning import asked_meanings
+from trajadapt.memory.placeholders import mentioned
+from trajadapt.readers.words import intensity_word, stated_numbers
+from trajadapt.skills.core import AMOUNT_WORDS
 
 NEAR = 0.5
+Request = tuple[frozenset[str], int, frozenset[float], int]
+"""What an instruction asks (``_request``): meaning tokens, named objects, numbers, how much."""
 Retrieval = Literal["words", "clauses"]
 RETRIEVALS: tuple[Retrieval, ...] = ("words", "clauses")
 
@@ -46,8 +56,8 @@ def choose_examples(
         return []
     own = [example.as_example(instruction, names) for example in remembered]
     bank = shipped_bank(by) if not own else ExampleBank([*own, *default_bank().examples], _meanings(by))
-    query = terms(instruction, names)
-    near = {index for index, example in enumerate(own) if _near(query, example, names)}
+    asked = _request(instruction, names)
+    near = {index for index, example in enumerate(own) if _near(instruction, asked, example, names)}
     whole = bank.ranked(instruction, names)
     chosen = sorted(near, key=whole.index)
     if by == "clauses":
@@ -83,8 +93,23 @@ def _meanings(by: Retrieval) -> Callable[[str], list[str]] | None:
     return asked_meanings if by == "clauses" else None
 
 
-def _near(query: Sequence[str], example: Example, names: Sequence[str]) -> bool:
-    words = {term for term in query if "+" not in term}
+def _request(text: str, names: Sequence[str]) -> Request:
+    """What ``text`` asks, whatever its words: meaning tokens, how many objects, numbers, how much.
+
+    How much is -1, 0 or 1: its amount word asks less than plain, plain, or more ("slightly closer",
+    "closer", "much closer").
+    """
+    strength = AMOUNT_WORDS.get(intensity_word(text) or "", AMOUNT_WORDS["default"])
+    how_much = (strength > AMOUNT_WORDS["default"]) - (strength < AMOUNT_WORDS["default"])
+    meanings = frozenset(asked_meanings(text))
+    return meanings, len(mentioned(text, names)), frozenset(stated_numbers(text)), how_much
+
+
+def _near(instruction: str, asked: Request, example: Example, names: Sequence[str]) -> bool:
+    """Whether ``example`` asks what ``instruction`` asks (``asked``), or shares its words."""
+    if asked[0]:
+        return _request(example.instruction, [*names, *example.object_names]) == asked
+    words = {term for term in terms(instruction, names) if "+" not in term}
     theirs = {term for term in terms(example.instruction, [*names, *example.object_names]) if "+" not in term}
     if not words or not theirs:
         return False

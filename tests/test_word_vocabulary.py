@@ -1,0 +1,79 @@
+"""One vocabulary of pace, closeness and direction verbs, read alike by the readers, the effect's flags
+and the meaning tokens. The wordings are in none of the paraphrase sets."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.checks.effect import AWAY as EFFECT_AWAY
+from trajadapt.checks.effect import FASTER as EFFECT_FASTER
+from trajadapt.memory.meaning import asked_meanings
+from trajadapt.model.geometry import PAPER_AXES
+from trajadapt.readers.object_words import object_asks
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions
+
+
+@pytest.mark.parametrize(
+    ("words", "direction"),
+    [
+        ("ascend gently over the crate", "up"),
+        ("climbing a little near the middle", "up"),
+        ("elevate the route by 0.1", "up"),
+        ("lift the second half", "up"),
+        ("descend towards the floor", "down"),
+        ("let the path sink a bit", "down"),
+        ("dip under the shelf", "down"),
+    ],
+)
+def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> None:
+    assert said_directions(words) == {direction}
+
+
+@pytest.mark.parametrize(
+    "words", ["raise the speed near the lamp", "at a higher speed", "lower your pace", "lift the velocity"]
+)
+def test_a_word_before_a_speed_names_no_direction(words: str) -> None:
+    assert said_directions(words) == set()
+
+
+@pytest.mark.parametrize(
+    ("words", "faster"),
+    [
+        ("boost the pace", True),
+        ("pick up the speed", True),
+        ("at a greater velocity", True),
+        ("lessen your speed", False),
+        ("cut the pace in the first half", False),
+        ("brake before the goal", False),
+    ],
+)
+def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:
+    assert bool(FASTER.search(words)) is faster and bool(SLOWER.search(words)) is not faster
+    assert asked_meanings(words)[0] == ("@faster" if faster else "@slower")
+
+
+@pytest.mark.parametrize(
+    ("words", "relation"),
+    [
+        ("give the vase a wider berth", "away"),
+        ("leave extra room around the vase", "away"),
+        ("stay clear of the vase", "away"),
+        ("pass the vase with a tighter gap", "closer"),
+        ("hug the vase", "closer"),
+    ],
+)
+def test_closeness_is_read_alike_everywhere(words: str, relation: str) -> None:
+    pattern = {"away": AWAY, "closer": CLOSER}[relation]
+    other = {"away": CLOSER, "closer": AWAY}[relation]
+    assert pattern.search(words) and not other.search(words)
+    assert object_asks(words, ["vase"])["vase"].relation == relation
+    assert f"@{relation}" in asked_meanings(words)
+
+
+def test_the_effect_flags_use_the_same_words() -> None:
+    assert EFFECT_AWAY is AWAY and EFFECT_FASTER is FASTER
+
+
+def test_a_skill_still_takes_only_direction_words() -> None:
+    with pytest.raises(ValueError, match="direction"):
+        PAPER_AXES.vector("climb")

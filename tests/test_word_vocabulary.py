@@ -57,7 +57,7 @@ def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster
     [
         ("give the vase a wider berth", "away"),
         ("leave extra room around the vase", "away"),
-        ("stay clear of the vase", "away"),
+        ("allow more clearance around the vase", "away"),
         ("pass the vase with a tighter gap", "closer"),
         ("hug the vase", "closer"),
     ],

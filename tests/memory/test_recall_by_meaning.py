@@ -29,7 +29,9 @@ def bank(tmp_path: Path) -> MemoryBank:
     bank = MemoryBank(tmp_path / "memory.jsonl")
     _remember(bank, "walk closer to the husky", "move_closer(t, detect_objects('husky'))")
     _remember(bank, "go slightly upwards", "shift(t, 'up', 'slightly')")
-    _remember(bank, "go up and keep away from the husky", "move_away(t, detect_objects('husky'))", "shift(t, 'up')")
+    _remember(
+        bank, "go up and keep away from the husky", "move_away(t, detect_objects('husky'))", "shift(t, 'up')"
+    )
     _remember(bank, "slow down near the bench", "scale_speed(t, 0.65, near=detect_objects('bench'))")
     return bank
 

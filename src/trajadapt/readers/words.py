@@ -99,11 +99,12 @@ CLOSER = re.compile(
     re.I,
 )
 AWAY = re.compile(
-    r"\b(?:away|further|farther|avoid\w*|clear of"
+    r"\b(?:away|further|farther"
     r"|(?:greater|larger|bigger|more|increased?|wider|extra) (?:distance|berth|space|room|gap|clearance))\b",
     re.I,
 )
-"""What asks to come closer to an object, and to keep further from it."""
+"""What asks to come closer to an object, and to keep further from it ("avoid" asks a clearance, which
+the readers leave to ``avoid``; only the effect's flags count it as away)."""
 
 
 def whole_words(text: str) -> str:

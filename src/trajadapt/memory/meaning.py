@@ -7,8 +7,9 @@ with the product's own readers of words (the ones the checks use: a pace asked f
 the directions the path should move in, closer or further from an object, the parts and positions
 of the path it speaks of) and each reading becomes a token such as ``@faster``, ``@up`` or
 ``@away``. Examples and instructions are read the same way, so two wordings that the readers
-understand alike meet on these tokens whatever their verbs. Used by ``retrieval=clauses``
-(``recall``), which is opt-in: see docs/benchmarks.md, "Issue #24, session 11".
+understand alike meet on these tokens whatever their verbs. Used by ``recall`` to tell whether a
+remembered answer asks what the instruction asks (always), and by ``retrieval=clauses``, which is
+opt-in: see docs/benchmarks.md, "Issue #24, session 11" and "Issue #28, session 12".
 """
 
 from __future__ import annotations

@@ -182,6 +182,11 @@ AVOIDED = re.compile(r"\b(?:avoid\w*|clear of)\b", re.I)
 """Words that ask a clearance: the flags read them as asking away (the readers leave them to ``avoid``)."""
 
 
+def _asks_away(text: str) -> bool:
+    """Whether the words ask to keep further from something (``AWAY``, or a clearance: ``AVOIDED``)."""
+    return bool(AWAY.search(text) or AVOIDED.search(text))
+
+
 def contradictions(instruction: str, effect: Effect, axes: Axes | None = None) -> list[str]:
     """What the measured effect contradicts in the instruction's words; [] when nothing can be read."""
     text = instruction.lower()
@@ -213,7 +218,7 @@ def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
     if abs(change) <= noticeable and not speed_changed:
         return [f"the instruction names the {obj.name}, but neither the distance to it {distances} "
                 "nor the speed near it changed"]  # fmt: skip
-    away = bool(AWAY.search(text) or AVOIDED.search(text))
+    away = _asks_away(text)
     if CLOSER.search(text) and not away and change > noticeable:
         return [
             f"the instruction asks to get closer to the {obj.name}, but the closest distance grew {distances}"
@@ -226,13 +231,7 @@ def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
 def _direction_flags(text: str, effect: Effect, noticeable: float, axes: Axes) -> list[str]:
     words = moving_directions(text)  # "slow down" says no direction
     named = [w for w in DIRECTIONS if w in words]
-    if (
-        len(named) != 1
-        or OPPOSITE_DIRECTIONS[named[0]] in words
-        or CLOSER.search(text)
-        or AWAY.search(text)
-        or AVOIDED.search(text)
-    ):
+    if len(named) != 1 or OPPOSITE_DIRECTIONS[named[0]] in words or CLOSER.search(text) or _asks_away(text):
         return []  # several directions, or relative to an object: no single expected sign
     along = float(np.asarray(effect.mean_shift) @ axes.vector(named[0]))
     if along < -noticeable:

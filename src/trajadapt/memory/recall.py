@@ -34,11 +34,10 @@ from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, terms
 from trajadapt.memory.bank import RememberedExample
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.memory.placeholders import mentioned
-from trajadapt.readers.words import intensity_word, stated_numbers
-from trajadapt.skills.core import AMOUNT_WORDS
+from trajadapt.readers.words import amount_size, stated_numbers
 
 NEAR = 0.5
-Request = tuple[frozenset[str], int, frozenset[float], int]
+Request = tuple[frozenset[str], int, frozenset[float], str]
 """What an instruction asks (``_request``): meaning tokens, named objects, numbers, how much."""
 Retrieval = Literal["words", "clauses"]
 RETRIEVALS: tuple[Retrieval, ...] = ("words", "clauses")
@@ -56,8 +55,7 @@ def choose_examples(
         return []
     own = [example.as_example(instruction, names) for example in remembered]
     bank = shipped_bank(by) if not own else ExampleBank([*own, *default_bank().examples], _meanings(by))
-    asked = _request(instruction, names)
-    near = {index for index, example in enumerate(own) if _near(instruction, asked, example, names)}
+    near = _near_matches(instruction, own, names)
     whole = bank.ranked(instruction, names)
     chosen = sorted(near, key=whole.index)
     if by == "clauses":
@@ -94,21 +92,26 @@ def _meanings(by: Retrieval) -> Callable[[str], list[str]] | None:
 
 
 def _request(text: str, names: Sequence[str]) -> Request:
-    """What ``text`` asks, whatever its words: meaning tokens, how many objects, numbers, how much.
+    """What ``text`` asks, whatever its words: meaning tokens, objects, numbers, how much.
 
-    How much is -1, 0 or 1: its amount word asks less than plain, plain, or more ("slightly closer",
-    "closer", "much closer").
+    How much is ``words.amount_size``: "slightly closer", "closer" and "much closer" differ.
     """
-    strength = AMOUNT_WORDS.get(intensity_word(text) or "", AMOUNT_WORDS["default"])
-    how_much = (strength > AMOUNT_WORDS["default"]) - (strength < AMOUNT_WORDS["default"])
     meanings = frozenset(asked_meanings(text))
-    return meanings, len(mentioned(text, names)), frozenset(stated_numbers(text)), how_much
+    return meanings, len(mentioned(text, names)), frozenset(stated_numbers(text)), amount_size(text)
 
 
-def _near(instruction: str, asked: Request, example: Example, names: Sequence[str]) -> bool:
-    """Whether ``example`` asks what ``instruction`` asks (``asked``), or shares its words."""
+def _near_matches(instruction: str, own: Sequence[Example], names: Sequence[str]) -> set[int]:
+    """The indices of ``own`` that ask what ``instruction`` asks, or share its words (none asked)."""
+    if not own:
+        return set()
+    asked = _request(instruction, names)
     if asked[0]:
-        return _request(example.instruction, [*names, *example.object_names]) == asked
+        return {i for i, e in enumerate(own) if _request(e.instruction, [*names, *e.object_names]) == asked}
+    return {i for i, e in enumerate(own) if _shares_words(instruction, e, names)}
+
+
+def _shares_words(instruction: str, example: Example, names: Sequence[str]) -> bool:
+    """Whether the word stems both share are at least ``NEAR`` of each side's."""
     words = {term for term in terms(instruction, names) if "+" not in term}
     theirs = {term for term in terms(example.instruction, [*names, *example.object_names]) if "+" not in term}
     if not words or not theirs:

@@ -56,11 +56,10 @@ PATH_WORDS = re.compile(
 
 
 PACE_PHRASES = re.compile(
-    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b"
-    r"|\bpick(?:s|ed|ing)?\s+up\s+(?:the\s+|your\s+|its\s+)?(?:pace|speed)\b",
-    re.I,
+    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding)\s+(?:down|up)\b", re.I
 )
-"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up", "pick up the pace")."""
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up"; "pick up the pace"
+is a word before a speed, which ``said_directions`` already leaves out)."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""
@@ -125,15 +124,14 @@ def names_in(text: str, names: Iterable[str]) -> list[str]:
 OF_SPEED = re.compile(rf"\b[a-z]+\s+{SPEED_NOUN}", re.I)
 """A word before a speed: "higher speed" and "raise the pace" name no direction."""
 
+DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
+"""Every word that names a direction, to its canonical direction."""
+
 
 def said_directions(words: str) -> set[str]:
     """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back', 'climb' -> 'up')."""
     found = re.findall(r"[a-z]+", OF_SPEED.sub(" ", words.lower()))
-    return {
-        DIRECTION_SYNONYMS.get(w) or DIRECTION_VERBS[w]
-        for w in found
-        if w in DIRECTION_SYNONYMS or w in DIRECTION_VERBS
-    }
+    return {DIRECTION_WORDS[word] for word in found if word in DIRECTION_WORDS}
 
 
 def longest_names(named: list[str]) -> list[str]:
@@ -175,13 +173,11 @@ def is_stated(value: float, numbers: list[float]) -> bool:
 def speed_factor(words: str, faster: bool) -> float:
     """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
     clause = next((c for c in clauses(words) if SPEED_WORDS.search(c)), "")
-    word = intensity_word(clause)
-    strength = AMOUNT_WORDS.get(word or "", AMOUNT_WORDS["default"])
-    size = (
-        "a bit"
-        if strength < AMOUNT_WORDS["default"]
-        else "a lot"
-        if strength > AMOUNT_WORDS["default"]
-        else ""
-    )
-    return SPEED_FACTORS["faster" if faster else "slower"][size]
+    return SPEED_FACTORS["faster" if faster else "slower"][amount_size(clause)]
+
+
+def amount_size(words: str) -> str:
+    """How much the amount word of ``words`` asks: 'a bit' (less than plain), '' (plain) or 'a lot'."""
+    strength = AMOUNT_WORDS.get(intensity_word(words) or "", AMOUNT_WORDS["default"])
+    plain = AMOUNT_WORDS["default"]
+    return "a bit" if strength < plain else "a lot" if strength > plain else ""

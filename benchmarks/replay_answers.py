@@ -4,7 +4,7 @@ Measures changes that act after the answer (leaving out unasked steps, replacing
 skill constants, projection, the judges) on exactly the answers a run got: each stored result's
 plan and code are given back as the answer to that case's request, with no repair round.
 
-Run: .venv/bin/python benchmarks/replay_answers.py STORED_OUT CASES... --out NEW_OUT
+Run: .venv/bin/python benchmarks/replay_answers.py STORED_OUT CASES... --out NEW_OUT [--memory BANK]
 Then compare: .venv/bin/python benchmarks/compare_runs.py STORED_OUT NEW_OUT
 """
 
@@ -56,6 +56,9 @@ def main() -> None:
     parser.add_argument("stored", type=Path)
     parser.add_argument("cases", nargs="+", type=Path)
     parser.add_argument("--out", type=Path, required=True)
+    parser.add_argument("--memory", type=Path, default=None,
+                        help="recall from this bank of remembered examples, as the stored run did "
+                        "(bench --memory)")  # fmt: skip
     parser.add_argument("--no-readers", action="store_true",
                         help="run the answers as they are, without reading them against the words "
                         "(read_against_words off)")  # fmt: skip
@@ -80,7 +83,8 @@ def main() -> None:
         replayed.append(case)
     settings = SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0,
                                read_against_words=not args.no_readers)  # fmt: skip
-    records = run_benchmark(replayed, StoredAnswers(answers), BenchConfig(out_dir=args.out, session=settings))
+    config = BenchConfig(out_dir=args.out, session=settings, memory=args.memory)
+    records = run_benchmark(replayed, StoredAnswers(answers), config)
     write_report(args.out, records)
     print(f"replayed {len(records)} stored answers -> {args.out}")
 

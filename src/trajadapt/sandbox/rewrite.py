@@ -4,6 +4,11 @@ A small model often calls a skill and drops its result (``spiral(t, 0.1)`` inste
 ``t = spiral(t, 0.1)``); skills return a new trajectory, so the call would do nothing. Such a bare
 call whose first argument is a plain variable is rewritten to assign the result back to that
 variable, and a note tells the reviewer.
+
+A shift and a closer/further step in one program ask both ("go up by 0.2 and a bit closer to the
+table"), but run one after the other the second undoes part of the first: closer to a table below
+pulls the path down again. ``measure_relations_from_original`` runs the closer/further steps after
+the shifts, with their distances promised from the original path and reached across the shift.
 """
 
 from __future__ import annotations
@@ -50,3 +55,96 @@ def _discarded_skill_call(statement: ast.stmt, functions: Collection[str]) -> st
 def _name(statement: ast.stmt) -> str:
     call = statement.value  # type: ignore[attr-defined]
     return str(call.func.id)
+
+
+SHIFTS = frozenset({"shift"})
+RELATIONS = frozenset({"move_closer", "move_away"})
+
+
+def measure_relations_from_original(tree: ast.Module) -> list[str]:
+    """Run closer/further steps after the whole-path shifts they sit beside, measured from the original.
+
+    Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable, made of
+    ``shift`` and ``move_closer`` / ``move_away`` steps only (both present): the relation steps move
+    after the last shift and get ``reference=get_trajectory()``. Anything else is left as written.
+
+    Returns:
+        One note per relation step changed.
+    """
+    notes: list[str] = []
+    for start, end in _step_runs(tree.body):
+        run = tree.body[start:end]
+        names = [_skill(statement) for statement in run]
+        if not (SHIFTS & set(names) and RELATIONS & set(names)):
+            continue
+        relations = [s for s, name in zip(run, names, strict=True) if name in RELATIONS]
+        if any(_has_keyword(s, "reference") for s in relations):
+            continue
+        for statement in relations:
+            call = statement.value  # type: ignore[attr-defined]
+            reference = ast.Call(ast.Name("get_trajectory", ast.Load()), [], [])
+            call.keywords.append(ast.keyword("reference", reference))
+            notes.append(
+                f"line {statement.lineno}: {call.func.id}() measured from the original path, after "
+                "the shift, so that the shift keeps its amount"
+            )
+        tree.body[start:end] = [s for s in run if s not in relations] + relations
+    ast.fix_missing_locations(tree)
+    return notes
+
+
+def _step_runs(body: list[ast.stmt]) -> list[tuple[int, int]]:
+    """[start, end) of each run of shift / relation steps on one variable.
+
+    Lines that neither assign nor read the variable (``table = detect_objects('table')``) may sit
+    between the steps; a run starts and ends with a step.
+    """
+    runs: list[tuple[int, int]] = []
+    index = 0
+    while index < len(body):
+        variable = _step_variable(body[index])
+        if variable is None:
+            index += 1
+            continue
+        end = last = index + 1
+        while end < len(body) and (_step_variable(body[end]) == variable or _apart(body[end], variable)):
+            end += 1
+            if _step_variable(body[end - 1]) == variable:
+                last = end
+        runs.append((index, last))
+        index = last
+    return runs
+
+
+def _apart(statement: ast.stmt, variable: str) -> bool:
+    """Whether a line leaves ``variable`` alone: it assigns another name and does not read it."""
+    return (
+        isinstance(statement, ast.Assign)
+        and all(isinstance(target, ast.Name) and target.id != variable for target in statement.targets)
+        and not any(isinstance(node, ast.Name) and node.id == variable for node in ast.walk(statement.value))
+    )
+
+
+def _step_variable(statement: ast.stmt) -> str | None:
+    """``t`` for ``t = skill(t, ...)`` with skill a shift or a relation step, else None."""
+    if _skill(statement) not in SHIFTS | RELATIONS:
+        return None
+    target = statement.targets[0]  # type: ignore[attr-defined]
+    first = statement.value.args[0]  # type: ignore[attr-defined]
+    if isinstance(target, ast.Name) and isinstance(first, ast.Name) and target.id == first.id:
+        return target.id
+    return None
+
+
+def _skill(statement: ast.stmt) -> str | None:
+    """The skill a ``name = skill(arg, ...)`` statement calls, else None."""
+    if not (isinstance(statement, ast.Assign) and len(statement.targets) == 1):
+        return None
+    call = statement.value
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and call.args:
+        return call.func.id
+    return None
+
+
+def _has_keyword(statement: ast.stmt, name: str) -> bool:
+    return any(k.arg == name for k in statement.value.keywords)  # type: ignore[attr-defined]

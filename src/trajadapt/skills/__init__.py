@@ -52,7 +52,7 @@ SKILLS: tuple[Callable[..., Any], ...] = (
 )
 
 SKILL_NAMES = tuple(function.__name__ for function in SKILLS)
-PROMPT_HIDDEN = frozenset({"axes", "iterations", "count", "seed", "width"})  # rarely needed; shorter prompt
+PROMPT_HIDDEN = frozenset({"axes", "iterations", "count", "seed", "width", "reference"})  # rarely needed
 
 
 def bind_skills(axes: Axes = PAPER_AXES) -> dict[str, Callable[..., Any]]:

@@ -55,33 +55,72 @@ def _weight(t: Array, point: Array) -> Array:
     return proximity(t, point, INFLUENCE * extent(t)) * ends
 
 
-def move_closer(trajectory: TrajectoryArg, point: PointArg, amount: FractionArg = None) -> Array:
+def move_closer(
+    trajectory: TrajectoryArg, point: PointArg, amount: FractionArg = None, *, reference: Any = None
+) -> Array:
     """Bring the path closer to a point; amount is a fraction 0..1 or 'a bit' / 'a lot'.
 
     Bring the path closer to a point: the nearest part moves amount (fraction 0..1, or 'a bit', 'a lot')
-    of the way towards it; start and goal stay.
+    of the way towards it; start and goal stay. With ``reference`` (the path before other steps moved
+    it, of the same length), the distances are promised from the reference, and each waypoint reaches
+    its distance across what the other steps did, so that their moves stay (see ``to_distances``).
     """
     t = as_trajectory(trajectory)
     target = as_point(point)
-    weight = _fraction(amount) * _weight(t, target)
-    t[:, :3] += weight[:, None] * (target - t[:, :3])
-    return t
+    before = _reference(t, reference)
+    weight = _fraction(amount) * _weight(before, target)
+    asked = (1.0 - weight) * np.linalg.norm(before[:, :3] - target, axis=1)
+    if reference is not None:  # never further than the other steps left it
+        asked = np.minimum(asked, np.linalg.norm(t[:, :3] - target, axis=1))
+    return to_distances(t, before, target, asked)
 
 
-def move_away(trajectory: TrajectoryArg, point: PointArg, amount: DistanceArg = None) -> Array:
+def move_away(
+    trajectory: TrajectoryArg, point: PointArg, amount: DistanceArg = None, *, reference: Any = None
+) -> Array:
     """Push the path away from a point by amount (a distance, or 'a bit' / 'a lot').
 
     Push the path away from a point by amount (a distance, or 'a bit', 'a lot'); the nearest part moves
     most; start and goal stay. A vague amount shrinks when the path already passes far from the point.
+    ``reference``: as for ``move_closer``.
     """
     t = as_trajectory(trajectory)
     source = as_point(point)
-    distance = resolve_amount(amount, t)
+    before = _reference(t, reference)
+    distance = resolve_amount(amount, before)
     if amount is None or isinstance(amount, str):
-        distance *= _still_near(t, source)
-    away = t[:, :3] - source
-    away /= np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-12)
-    t[:, :3] += (distance * _weight(t, source))[:, None] * away
+        distance *= _still_near(before, source)
+    asked = np.linalg.norm(before[:, :3] - source, axis=1) + distance * _weight(before, source)
+    if reference is not None:  # never nearer than the other steps left it
+        asked = np.maximum(asked, np.linalg.norm(t[:, :3] - source, axis=1))
+    return to_distances(t, before, source, asked)
+
+
+def _reference(t: Array, reference: Any) -> Array:
+    """The path the distances are promised from: ``reference`` when given with t's length, else t."""
+    if reference is None:
+        return t
+    before = as_trajectory(reference)
+    return before if len(before) == len(t) else t
+
+
+def to_distances(t: Array, reference: Array, point: Array, distances: Array) -> Array:
+    """Each waypoint of t moved to its distance from the point, keeping what moved it from the reference.
+
+    A waypoint that other steps moved (t differs from the reference there) keeps its move along that
+    change and reaches the distance across it; as close as it can when the change alone is further. An
+    unmoved waypoint goes straight towards or away from the point.
+    """
+    offset = t[:, :3] - point
+    change = t[:, :3] - reference[:, :3]
+    size = np.linalg.norm(change, axis=1, keepdims=True)
+    along = np.where(size > 1e-9 * max(extent(t), 1e-12), change / np.maximum(size, 1e-300), 0.0)
+    held = np.sum(offset * along, axis=1, keepdims=True) * along
+    across = offset - held
+    length = np.linalg.norm(across, axis=1)
+    wanted = np.sqrt(np.maximum(distances**2 - np.sum(held**2, axis=1), 0.0))
+    scale = np.where(length > 1e-12, wanted / np.maximum(length, 1e-300), 1.0)
+    t[:, :3] = point + held + across * scale[:, None]
     return t
 
 

@@ -121,3 +121,19 @@ def test_a_made_up_radius_of_a_speed_change_is_left_to_the_default_and_a_stated_
     assert code == "t = set_speed(t, 5, near=detect_objects('box'))" and len(notes) == 1
     stated = "t = set_speed(t, 5, near=detect_objects('box'), radius=2)"
     assert replace_unstated_amounts(stated, ["a speed of 5 within 2 of the box"]) == (stated, [])
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        ("go a little quicker", "t = scale_speed(t, 0.8)", "t = scale_speed(t, 1.25)"),
+        ("brake near the end", "t = scale_speed(t, 1.3)", "t = scale_speed(t, 0.65)"),
+        ("faster by the lamp, slower by the sofa", "t = scale_speed(t, 0.8)", "t = scale_speed(t, 0.65)"),
+    ],
+)
+def test_a_made_up_factor_takes_the_one_pace_the_words_ask(
+    instruction: str, step: str, expected: str
+) -> None:
+    """Session 13: the direction comes from the words when they ask one pace, else from the model."""
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [expected] and notes

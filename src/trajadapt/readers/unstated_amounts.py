@@ -10,7 +10,8 @@ or removed so that the skill's calibrated default applies; so is a made-up ``rad
 change (``set_speed(t, 5, near=box, radius=1.0)`` on a 100-unit map reached no waypoint). A speed
 factor the user never gave (``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated
 factor of the prompt's phrase table for the words of the speed's own clause ('a bit', none, 'a
-lot'), in the direction the model chose; "by 20%", "twice", "half as fast" are stated factors. A
+lot'), in the direction the words ask when they ask only one ("pick up the pace" with a factor
+below 1), else in the one the model chose; "by 20%", "twice", "half as fast" are stated factors. A
 review note says so.
 """
 
@@ -21,7 +22,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
-from trajadapt.readers.words import intensity_word, is_stated, speed_factor, stated_numbers
+from trajadapt.readers.words import FASTER, SLOWER, intensity_word, is_stated, speed_factor, stated_numbers
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
@@ -122,7 +123,8 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> str | None
             continue
         if is_stated_factor(float(value), numbers):
             continue
-        argument.value = speed_factor(words, faster=value > 1)
+        faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
+        argument.value = speed_factor(words, faster=faster if faster != slower else value > 1)
         return ast.unparse(tree)
     return None
 

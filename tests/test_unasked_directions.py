@@ -35,10 +35,35 @@ def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(
         ("t = shift(t, 'up')\nt = shift(t, 'left')", "further from the lamp"),  # two guesses: which?
         ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "further from the lamp"),  # done
         ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "go faster"),  # the speed is changed already
-        ("t = shift(t, 'up')", "go faster near the lamp"),  # a speed placed at an object: object_asks
         ("t = shift(t, 'up')", "make the path smoother"),  # nothing else asked
     ],
 )
 def test_said_directions_several_guesses_or_nothing_asked_stay(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert replace_unasked_shifts(code, [words], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        ("t = shift_part(t, 'up', None, 'middle')", "speed up over the middle part",
+         "t = scale_speed(t, 1.4, part='middle')"),
+        ("t = shift(t, 'down')", "slow down a lot in the final part", "t = scale_speed(t, 0.45, part='final')"),
+        ("t = shift_start(t, 'left', 'a lot')", "go much slower when you pass the lamp",
+         "t = scale_speed(t, 0.45, near=detect_objects('Lamp'))"),
+        ("t = shift(t, 'right')", "hurry when the sofa is close", "t = scale_speed(t, 1.4, near=detect_objects('sofa'))"),
+    ],
+)  # fmt: skip
+def test_a_pace_is_no_direction_and_may_be_tied_to_one_object(step: str, words: str, expected: str) -> None:
+    """'speed up' / 'calm down' name no direction (session 13); a pace near one object scales it there."""
+    code, notes = replace_unasked_shifts(CODE.format(step=step), [words], NAMES)
+    assert code.splitlines()[1] == expected
+    assert "names no such direction" in notes[0]
+
+
+def test_paces_near_two_objects_leave_the_shift_alone() -> None:
+    code = CODE.format(step="t = shift(t, 'left')")
+    assert replace_unasked_shifts(code, ["faster near the lamp and slower near the sofa"], NAMES) == (
+        code,
+        [],
+    )

@@ -22,7 +22,7 @@ from trajadapt.checks.constraints import ConstraintMove
 from trajadapt.model.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
 from trajadapt.model.scene import SceneObject
 from trajadapt.model.trajectory import Trajectory
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, moving_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions
 
 Array = npt.NDArray[np.float64]
 NEAR_SHARE = 0.25  # the share of waypoints nearest an object whose speed counts as "near" it
@@ -229,7 +229,7 @@ def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
 
 
 def _direction_flags(text: str, effect: Effect, noticeable: float, axes: Axes) -> list[str]:
-    words = moving_directions(text)  # "slow down" says no direction
+    words = said_directions(text)  # "slow down" says no direction
     named = [w for w in DIRECTIONS if w in words]
     if len(named) != 1 or OPPOSITE_DIRECTIONS[named[0]] in words or CLOSER.search(text) or _asks_away(text):
         return []  # several directions, or relative to an object: no single expected sign

@@ -17,7 +17,7 @@ import numpy as np
 
 from trajadapt.checks.effect import NOTICEABLE, Effect, contradictions
 from trajadapt.model.geometry import Axes
-from trajadapt.readers.words import AWAY, CLOSER, asked_kinds, moving_directions, names_in
+from trajadapt.readers.words import AWAY, CLOSER, asked_kinds, names_in, said_directions
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
@@ -32,7 +32,7 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
             f"the step moved the path (by up to {effect.largest_displacement:.3g}), but these words ask "
             "only for a change of speed"
         )
-    concrete = bool(moving_directions(clause) or names_in(clause, [obj.name for obj in effect.objects]))
+    concrete = bool(said_directions(clause) or names_in(clause, [obj.name for obj in effect.objects]))
     if place and concrete and not pace and speed_changed and not moved:
         findings.append(
             "the step changed only the speed, but these words ask where the path goes, not how fast"
@@ -42,7 +42,7 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
 
 def _not_moved_as_said(clause: str, effect: Effect, axes: Axes) -> list[str]:
     """One direction said, no object to go closer to or away from, and nothing moved that way."""
-    said = moving_directions(clause)
+    said = said_directions(clause)
     if (
         len(said) != 1
         or CLOSER.search(clause)

@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from trajadapt.readers.words import asked_kinds, moving_directions, names_in, whole_words
+from trajadapt.readers.words import asked_kinds, names_in, said_directions, whole_words
 
 BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
@@ -138,7 +138,7 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return True  # a sentence mark, "then"
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
-        return bool(_content_words(piece, names)[1:]) or bool(moving_directions(piece))
+        return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
     if participle and joiner.strip() == ",":
         return bool(asked_kinds(piece) - asked_kinds(previous))
     return _asks_something(piece, names)

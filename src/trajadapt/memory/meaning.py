@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from trajadapt.clauses.grammar import said_places
 from trajadapt.clauses.split import split_clauses
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace, moving_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace, said_directions
 
 MARK = "@"
 """What starts a meaning token (no word stem does)."""
@@ -42,7 +42,7 @@ def _clause_meanings(clause: str) -> list[str]:
     found = []
     if asks_pace(clause):
         found.append("faster" if FASTER.search(lowered) else "slower" if SLOWER.search(lowered) else "pace")
-    found += sorted(moving_directions(clause))
+    found += sorted(said_directions(clause))
     found += ["closer"] if CLOSER.search(lowered) else []
     found += ["away"] if AWAY.search(lowered) else []
     found += sorted(said_places(clause))

@@ -8,6 +8,8 @@ becomes that step:
 
 - a clause asks to come closer to / go away from an object and no step touches the object ->
   ``move_closer`` / ``move_away`` of it with the clause's vague word;
+- the words ask for a faster or slower pace near one object, and the code changes no speed ->
+  ``scale_speed`` near that object with the calibrated factor for the clause's words;
 - the words ask for a faster or slower pace in no particular object's place, and the code changes no
   speed -> ``scale_speed`` with the calibrated factor, in the shift's part (``part=``) or the part
   the words name ("in the middle", "at the start", "towards the end"), else everywhere.
@@ -74,12 +76,16 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
             skill = "move_closer" if ask.relation == "closer" else "move_away"
             step = f"t = {skill}(t, detect_objects({ask.name!r}){f', {word!r}' if word else ''})"
             return step, f"it asks {asked_words(ask)} {ask.name}"
+    if any(called_name(x) in SPEED_STEPS for x in lines):
+        return None, ""
+    paces = [ask for ask in asks if ask.relation in ("faster", "slower")]
+    if len(paces) == 1:
+        ask = paces[0]
+        factor = speed_factor(ask.clause, faster=ask.relation == "faster")
+        step = f"t = scale_speed(t, {factor}, near=detect_objects({ask.name!r}))"
+        return step, f"it asks for a {ask.relation} pace near {ask.name}"
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
-    if (
-        faster == slower
-        or any(called_name(x) in SPEED_STEPS for x in lines)
-        or any(ask.relation in ("faster", "slower") for ask in asks)
-    ):
+    if faster == slower or paces:
         return None, ""
     part = _shift_part(lines[index]) or _part_named(words)
     where = f", part={part!r}" if part else ""

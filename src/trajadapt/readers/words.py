@@ -65,15 +65,10 @@ SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""
 
 
-def moving_directions(words: str) -> set[str]:
-    """The directions the words ask the path to move in: ``said_directions`` less "slow down"'s."""
-    return said_directions(PACE_PHRASES.sub(" slow ", words))
-
-
 def asked_kinds(words: str) -> frozenset[str]:
     """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
     kinds = {"pace"} if asks_pace(words) else set()
-    if PATH_WORDS.search(words) or moving_directions(words):
+    if PATH_WORDS.search(words) or said_directions(words):
         kinds.add("place")
     return frozenset(kinds)
 
@@ -129,8 +124,12 @@ DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 
 
 def said_directions(words: str) -> set[str]:
-    """The directions the words name, canonical ('upwards' -> 'up', 'behind' -> 'back', 'climb' -> 'up')."""
-    found = re.findall(r"[a-z]+", OF_SPEED.sub(" ", words.lower()))
+    """The directions the words ask the path to move in, canonical ('upwards' -> 'up', 'climb' -> 'up').
+
+    A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
+    (``OF_SPEED``) are left out.
+    """
+    found = re.findall(r"[a-z]+", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
     return {DIRECTION_WORDS[word] for word in found if word in DIRECTION_WORDS}
 
 

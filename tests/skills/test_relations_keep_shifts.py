@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.model.trajectory import Trajectory
-from trajadapt.sandbox.rewrite import measure_relations_from_original
+from trajadapt.sandbox.rewrite import measure_from_original
 from trajadapt.sandbox.runner import ExecutionOptions
 from trajadapt.skills import bind_skills
 from trajadapt.skills.objects import _fraction, _weight, move_away, move_closer
@@ -90,7 +90,7 @@ def test_a_reference_of_another_length_is_ignored():
 
 def rewritten(code: str) -> tuple[str, list[str]]:
     tree = ast.parse(code)
-    notes = measure_relations_from_original(tree)
+    notes = measure_from_original(tree)
     return ast.unparse(tree), notes
 
 
@@ -145,3 +145,32 @@ def test_in_the_sandbox_a_rise_and_a_closer_step_both_hold(sandbox):
         original[middle, :3] - [1.2, 0.5, 0.6]
     )
     assert any("measured from the original path" in note for note in result.notes)
+
+
+def test_the_path_up_and_the_goal_down_ends_below_the_old_goal_with_the_middle_still_up():
+    original = arc()
+    raised = SKILL["shift"](original, "up", 0.1)
+    after = SKILL["shift_goal"](raised, "down", 0.1, reference=original)
+    assert after[-1, 2] - original[-1, 2] == pytest.approx(-0.1, abs=1e-9)
+    assert after[len(original) // 2, 2] - original[len(original) // 2, 2] > 0.04
+    assert np.allclose(after[0], original[0])
+    plain = SKILL["shift_goal"](raised, "down", 0.1)  # before: the two cancelled at the goal
+    assert plain[-1, 2] == pytest.approx(original[-1, 2], abs=1e-9)
+
+
+def test_an_end_moved_the_same_way_as_the_path_adds_up():
+    original = arc()
+    raised = SKILL["shift"](original, "up", 0.1)
+    after = SKILL["shift_start"](raised, "up", 0.1, reference=original)
+    assert np.allclose(after, SKILL["shift_start"](raised, "up", 0.1))
+
+
+def test_an_end_step_beside_a_shift_is_measured_from_the_original():
+    code, notes = rewritten(
+        "t = get_trajectory()\nt = shift_goal(t, 'down', 'a little')\nt = shift(t, 'up', 'a little')\n"
+    )
+    assert code.splitlines()[1:] == [
+        "t = shift(t, 'up', 'a little')",
+        "t = shift_goal(t, 'down', 'a little', reference=get_trajectory())",
+    ]
+    assert "shift_goal" in notes[0]

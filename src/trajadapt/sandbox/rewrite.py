@@ -7,8 +7,9 @@ variable, and a note tells the reviewer.
 
 A shift and a closer/further step in one program ask both ("go up by 0.2 and a bit closer to the
 table"), but run one after the other the second undoes part of the first: closer to a table below
-pulls the path down again. ``measure_relations_from_original`` runs the closer/further steps after
-the shifts, with their distances promised from the original path and reached across the shift.
+pulls the path down again; "the path up a little, the goal down a little" left the goal where it
+was. ``measure_from_original`` runs such steps after the shifts, measured from the original path:
+distances promised from it and reached across the shift, an end moved beyond where it was.
 """
 
 from __future__ import annotations
@@ -58,43 +59,44 @@ def _name(statement: ast.stmt) -> str:
 
 
 SHIFTS = frozenset({"shift"})
-RELATIONS = frozenset({"move_closer", "move_away"})
+MEASURED = frozenset({"move_closer", "move_away", "shift_goal", "shift_start"})
+"""Steps that take ``reference=``: their promise is kept from the original path across a shift."""
 
 
-def measure_relations_from_original(tree: ast.Module) -> list[str]:
-    """Run closer/further steps after the whole-path shifts they sit beside, measured from the original.
+def measure_from_original(tree: ast.Module) -> list[str]:
+    """Run closer/further and end steps after the whole-path shifts they sit beside, from the original.
 
     Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable, made of
-    ``shift`` and ``move_closer`` / ``move_away`` steps only (both present): the relation steps move
-    after the last shift and get ``reference=get_trajectory()``. Anything else is left as written.
+    ``shift`` and ``MEASURED`` steps only (both present): the measured steps move after the last
+    shift and get ``reference=get_trajectory()``. Anything else is left as written.
 
     Returns:
-        One note per relation step changed.
+        One note per step changed.
     """
     notes: list[str] = []
     for start, end in _step_runs(tree.body):
         run = tree.body[start:end]
         names = [_skill(statement) for statement in run]
-        if not (SHIFTS & set(names) and RELATIONS & set(names)):
+        if not (SHIFTS & set(names) and MEASURED & set(names)):
             continue
-        relations = [s for s, name in zip(run, names, strict=True) if name in RELATIONS]
-        if any(_has_keyword(s, "reference") for s in relations):
+        measured = [s for s, name in zip(run, names, strict=True) if name in MEASURED]
+        if any(_has_keyword(s, "reference") for s in measured):
             continue
-        for statement in relations:
+        for statement in measured:
             call = statement.value  # type: ignore[attr-defined]
             reference = ast.Call(ast.Name("get_trajectory", ast.Load()), [], [])
             call.keywords.append(ast.keyword("reference", reference))
             notes.append(
                 f"line {statement.lineno}: {call.func.id}() measured from the original path, after "
-                "the shift, so that the shift keeps its amount"
+                "the shift, so that neither undoes the other"
             )
-        tree.body[start:end] = [s for s in run if s not in relations] + relations
+        tree.body[start:end] = [s for s in run if s not in measured] + measured
     ast.fix_missing_locations(tree)
     return notes
 
 
 def _step_runs(body: list[ast.stmt]) -> list[tuple[int, int]]:
-    """[start, end) of each run of shift / relation steps on one variable.
+    """[start, end) of each run of shift / measured steps on one variable.
 
     Lines that neither assign nor read the variable (``table = detect_objects('table')``) may sit
     between the steps; a run starts and ends with a step.
@@ -126,8 +128,8 @@ def _apart(statement: ast.stmt, variable: str) -> bool:
 
 
 def _step_variable(statement: ast.stmt) -> str | None:
-    """``t`` for ``t = skill(t, ...)`` with skill a shift or a relation step, else None."""
-    if _skill(statement) not in SHIFTS | RELATIONS:
+    """``t`` for ``t = skill(t, ...)`` with skill a shift or a measured step, else None."""
+    if _skill(statement) not in SHIFTS | MEASURED:
         return None
     target = statement.targets[0]  # type: ignore[attr-defined]
     first = statement.value.args[0]  # type: ignore[attr-defined]

@@ -7,6 +7,8 @@ Changes blend in smoothly, and the start stays where it is unless the function i
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent, progress
@@ -46,23 +48,56 @@ def shift(
 
 
 def shift_goal(
-    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+    trajectory: TrajectoryArg,
+    direction: DirectionArg,
+    amount: DistanceArg = None,
+    *,
+    axes: Axes = PAPER_AXES,
+    reference: Any = None,
 ) -> Array:
-    """Move the goal in a direction by amount; the start stays and the path bends smoothly towards it."""
+    """Move the goal in a direction by amount; the start stays and the path bends smoothly towards it.
+
+    With ``reference`` (the path before other steps moved it), the goal ends amount beyond the
+    reference's goal in that direction even where other steps moved it the other way ("the path up a
+    little, the goal down a little": the goal ends below where it was); what they moved is undone over
+    the last 15%, as ``shift`` blends in over the first.
+    """
     t = as_trajectory(trajectory)
-    offset = axes.vector(direction) * resolve_amount(amount, t)
-    t[:, :3] += smoothstep(progress(t))[:, None] * offset
+    unit = axes.vector(direction)
+    s = progress(t)
+    undo = _moved_against(t, reference, -1, unit) * smoothstep((s - 1.0 + BLEND_IN) / BLEND_IN)
+    t[:, :3] += (smoothstep(s) * resolve_amount(amount, t) + undo)[:, None] * unit
     return t
 
 
 def shift_start(
-    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+    trajectory: TrajectoryArg,
+    direction: DirectionArg,
+    amount: DistanceArg = None,
+    *,
+    axes: Axes = PAPER_AXES,
+    reference: Any = None,
 ) -> Array:
-    """Move the start in a direction by amount; the goal stays and the change fades out along the path."""
+    """Move the start in a direction by amount; the goal stays and the change fades out along the path.
+
+    ``reference``: as for ``shift_goal``, for the start (undone over the first 15%).
+    """
     t = as_trajectory(trajectory)
-    offset = axes.vector(direction) * resolve_amount(amount, t)
-    t[:, :3] += (1.0 - smoothstep(progress(t)))[:, None] * offset
+    unit = axes.vector(direction)
+    s = progress(t)
+    undo = _moved_against(t, reference, 0, unit) * (1.0 - smoothstep(s / BLEND_IN))
+    t[:, :3] += ((1.0 - smoothstep(s)) * resolve_amount(amount, t) + undo)[:, None] * unit
     return t
+
+
+def _moved_against(t: Array, reference: Any, index: int, unit: Array) -> float:
+    """How far other steps moved waypoint ``index`` against ``unit`` since ``reference`` (0 if none)."""
+    if reference is None:
+        return 0.0
+    before = as_trajectory(reference)
+    if len(before) != len(t):
+        return 0.0
+    return max(0.0, -float((t[index, :3] - before[index, :3]) @ unit))
 
 
 def shift_part(

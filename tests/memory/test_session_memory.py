@@ -146,3 +146,22 @@ def test_adapt_remembers_unless_told_not_to_and_examples_manages_the_bank(tmp_pa
     assert imported.exit_code == 0 and "Imported 1 example" in imported.output
     missing = runner.invoke(cli, ["examples", "show", "zzzz"])
     assert missing.exit_code != 0 and "no example with id 'zzzz'" in missing.output
+
+
+def test_a_remembered_program_is_kept_as_approved_only_for_a_request_it_answers_in_full(
+    simple_case: Case, sandbox: Sandbox, tmp_path: Path
+) -> None:
+    """Session 13: a program remembered for "keep a smaller distance" is no approval of "keep a larger
+    distance" (or of "rise and keep a smaller distance"): the readers read it against the words."""
+    bank = MemoryBank(tmp_path / "memory.jsonl")
+    bank.remember("keep a smaller distance from the Red Mug", "1) Closer.", CLOSER, ["Red Mug"])
+    settings = SessionSettings(repair_attempts=0)
+
+    def drafted(instruction: str) -> str:
+        case = simple_case.with_instruction(instruction)
+        later = AdaptationSession(case, ScriptedBackend(answers=[answer("1) Closer.", CLOSER)]), sandbox,
+                                  settings, memory=bank)  # fmt: skip
+        return later.draft().code
+
+    assert "move_closer" in drafted("stay a little nearer to the Red Mug")  # the same request: kept
+    assert "move_away" in drafted("leave a wider gap to the Red Mug")  # the opposite: read again

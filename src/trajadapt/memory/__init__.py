@@ -6,6 +6,6 @@ by clauses and what they ask (``meaning``) or by words alone.
 """
 
 from trajadapt.memory.bank import MemoryBank, RememberedExample
-from trajadapt.memory.recall import RETRIEVALS, Retrieval, choose_examples
+from trajadapt.memory.recall import RETRIEVALS, Retrieval, asks_all_of, choose_examples
 
-__all__ = ["RETRIEVALS", "MemoryBank", "RememberedExample", "Retrieval", "choose_examples"]
+__all__ = ["RETRIEVALS", "MemoryBank", "RememberedExample", "Retrieval", "asks_all_of", "choose_examples"]

@@ -118,3 +118,13 @@ def _shares_words(instruction: str, example: Example, names: Sequence[str]) -> b
         return False
     shared = len(words & theirs)
     return min(shared / len(words), shared / len(theirs)) >= NEAR
+
+
+def asks_all_of(example: Example, instruction: str) -> bool:
+    """Whether the example's request asks everything ``instruction`` asks (its meaning tokens).
+
+    A remembered program is only the user's answer to this request when nothing asked here is missing
+    from the request it answered: "keep a smaller distance from the chair" does not answer "go slightly
+    upwards keeping a smaller distance from the chair".
+    """
+    return set(asked_meanings(instruction)) <= set(asked_meanings(example.instruction))

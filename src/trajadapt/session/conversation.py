@@ -18,7 +18,7 @@ from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
 from trajadapt.llm.answer_grammar import answer_grammar
 from trajadapt.llm.plan_stream import PlanStream
-from trajadapt.memory import MemoryBank
+from trajadapt.memory import MemoryBank, asks_all_of
 from trajadapt.model.case import Case
 from trajadapt.prompts import chosen_examples, first_messages, render
 from trajadapt.readers import ReaderNote, read_against_words
@@ -198,8 +198,15 @@ class Conversation:
         self._left_out = []
         if self.settings.mode != "skills" or not self.settings.read_against_words:
             return plan
-        approved = next((e for e in self.recalled_examples if _same_program(e.code, plan.code)), None)
-        if approved is not None:  # the user's own approved program for a request like this one
+        approved = next(
+            (
+                e
+                for e in self.recalled_examples
+                if _same_program(e.code, plan.code) and asks_all_of(e, self.case.instruction)
+            ),
+            None,
+        )
+        if approved is not None:  # the user's own approved program for a request asking all this one does
             kept = f"the program of remembered example {approved.remembered}, kept as approved"
             self._left_out = [ReaderNote("memory", kept)]
             return plan

@@ -16,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
@@ -47,6 +48,7 @@ class ReaderNote:
 
 READERS: tuple[Reader, ...] = (
     Reader("unasked-steps", "steps of a topic the words never mention", leave_out_unasked),
+    Reader("asked-directions", "a direction a clause asks and no step makes", add_asked_directions),
     Reader("unstated-amounts", "amounts the words never give",
            lambda code, asked, _: replace_unstated_amounts(code, asked)),
     Reader("stated-amounts", "a clause's one direction and amount, used as said",

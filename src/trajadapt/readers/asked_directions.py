@@ -1,0 +1,96 @@
+"""A direction a clause asks the whole path to move in, and no step that moves anything that way.
+
+A small model drops a clause of a compound instruction: "go to the front decelerating to 0 speed"
+came back as a deceleration alone, "raise the path slightly" beside a moved start as the start's
+move alone. A clause that names exactly one direction (``words.said_directions``: "front", "raise",
+"descend", ...), no object of the scene, no part or end of the path, no negation, and uses the
+direction word as a move rather than a place ("above the lamp", "left of the box" are places) asks
+the path to move that way. When no step of the code has that direction or its opposite among its
+arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contradiction, which the
+effect report flags, not a dropped clause) nor, for up and down, sets a height, the reader adds
+``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
+the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone: what
+it moves cannot be read. A review note says so.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+
+from trajadapt.code_parse import assigned_call, called_name
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
+from trajadapt.readers.words import clauses, intensity_word, names_in, said_directions
+from trajadapt.skills import SKILL_NAMES
+
+PLACE_OF = re.compile(
+    r"\b(?:above|below|beneath|underneath|under|over|behind|atop)\b"
+    r"|\b(?:left|right|front|back|top|bottom|side)\s+(?:side\s+)?of\b",
+    re.I,
+)
+"""A direction word used as a place ("above the lamp", "to the left of the box"), not a move."""
+PART_OR_END = re.compile(
+    r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
+    r"|cent(?:er|re)|waypoints?|points?|part|section|segment|portion)\b",
+    re.I,
+)
+NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
+HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
+
+
+def add_asked_directions(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with a shift for each direction a clause asks and no step makes (see the module)."""
+    names = list(names)
+    lines = code.splitlines()
+    moved = {direction for line in lines for direction in _directions(line)}
+    heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
+    start = next((i + 1 for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
+    if start is None or not all(_readable(line) for line in lines):
+        return code, []
+    added: list[str] = []
+    notes: list[str] = []
+    for clause in (c for words in asked for c in clauses(words)):
+        direction = _asked_move(clause, names)
+        if direction is None or {direction, OPPOSITE_DIRECTIONS[direction]} & moved:
+            continue
+        if heights and direction in ("up", "down"):
+            continue
+        word = intensity_word(clause)
+        step = f"t = shift(t, {direction!r}{f', {word!r}' if word else ''})"
+        added.append(step)
+        moved.add(direction)
+        notes.append(f"added `{step}`: the words ask to go {direction} ({clause.strip()!r}) and no step does")
+    if not added:
+        return code, []
+    return "\n".join([*lines[:start], *added, *lines[start:]]), notes
+
+
+def _readable(line: str) -> bool:
+    """A blank line, ``name = name`` or ``name = function(...)``: code whose moves the reader can see."""
+    if not line.strip() or called_name(line) in SKILL_NAMES + ("get_trajectory", "detect_objects"):
+        return True
+    return bool(re.fullmatch(r"\s*[A-Za-z_]\w*\s*=\s*[A-Za-z_]\w*\s*", line))
+
+
+def _directions(line: str) -> set[str]:
+    """The direction words among a step's arguments ('upwards' -> 'up'): ``extend(t, 1.5, 'back')``."""
+    found = assigned_call(line)
+    if found is None:
+        return set()
+    words = [node.value for node in ast.walk(found[1]) if isinstance(node, ast.Constant)]
+    return {
+        DIRECTION_SYNONYMS[w.strip().lower()]
+        for w in words
+        if isinstance(w, str) and w.strip().lower() in DIRECTION_SYNONYMS
+    }
+
+
+def _asked_move(clause: str, names: list[str]) -> str | None:
+    """The one direction the clause asks the path to move in, or None."""
+    directions = said_directions(clause)
+    if len(directions) != 1 or names_in(clause, names):
+        return None
+    if PLACE_OF.search(clause) or PART_OR_END.search(clause) or NEGATION.search(clause):
+        return None
+    return next(iter(directions))

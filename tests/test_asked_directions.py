@@ -1,0 +1,62 @@
+"""A direction a clause asks, with no step that moves that way, gets a shift (readers.asked_directions)."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.asked_directions import add_asked_directions
+
+NAMES = ["lamp", "Sofa"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "steps", "added"),
+    [
+        ("head left while easing to a halt at the end", ("t = speed_profile(t, 'decelerate', start=0.7)",),
+         "t = shift(t, 'left')"),
+        ("hug the lamp and climb slightly", ("t = move_closer(t, detect_objects('lamp'))",),
+         "t = shift(t, 'up', 'slightly')"),
+        ("swing the route backwards a lot, then slow down", ("t = scale_speed(t, 0.65)",),
+         "t = shift(t, 'back', 'a lot')"),
+    ],
+)  # fmt: skip
+def test_a_dropped_direction_becomes_the_first_step(words: str, steps: tuple[str, ...], added: str) -> None:
+    code, notes = add_asked_directions(program(*steps), [words], NAMES)
+    assert code.splitlines()[1] == added
+    assert code.splitlines()[2:-1] == list(steps)
+    assert "no step does" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        (
+            "go down a little and hurry",
+            ("t = shift_part(t, 'downwards', 'a little', part='middle')",),
+        ),  # done
+        ("after the goal carry on 2 to the rear", ("t = extend(t, 2, 'back')",)),  # extend goes back
+        ("fly above the lamp", ("t = stay_above(t, 0.5)",)),  # a place, and a height step
+        ("pass to the left of the sofa", ("t = keep_side(t, 'left', detect_objects('Sofa'))",)),
+        ("do not drift right", ("t = smooth(t)",)),  # a negation
+        ("move the first 5 waypoints up", ("t = scale_speed(t, 1.4)",)),  # a part: not the whole path
+        ("speed up and calm down near the end", ("t = scale_speed(t, 1.4)",)),  # paces, no direction
+        ("go left of the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # an object named
+    ],
+)
+def test_directions_already_moved_places_parts_and_paces_add_nothing(
+    words: str, steps: tuple[str, ...]
+) -> None:
+    code = program(*steps)
+    assert add_asked_directions(code, [words], NAMES) == (code, [])
+
+
+def test_the_added_shift_takes_the_clause_number_from_the_readers_after_it() -> None:
+    code, _ = read_against_words(
+        program("t = move_closer(t, detect_objects('Sofa'))"), ["sink by 0.15, nearing the sofa"], NAMES
+    )
+    assert "t = shift(t, 'down', 0.15)" in code.splitlines()

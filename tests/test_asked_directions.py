@@ -26,7 +26,7 @@ def program(*steps: str) -> str:
     ],
 )  # fmt: skip
 def test_a_dropped_direction_becomes_the_first_step(words: str, steps: tuple[str, ...], added: str) -> None:
-    code, notes = add_asked_directions(program(*steps), [words], NAMES)
+    code, notes = add_asked_directions(program(*steps), [words])
     assert code.splitlines()[1] == added
     assert code.splitlines()[2:-1] == list(steps)
     assert "no step does" in notes[0]
@@ -45,14 +45,16 @@ def test_a_dropped_direction_becomes_the_first_step(words: str, steps: tuple[str
         ("do not drift right", ("t = smooth(t)",)),  # a negation
         ("move the first 5 waypoints up", ("t = scale_speed(t, 1.4)",)),  # a part: not the whole path
         ("speed up and calm down near the end", ("t = scale_speed(t, 1.4)",)),  # paces, no direction
-        ("go left of the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # an object named
+        ("go left of the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # a place
+        ("ease up when the sofa is near", ("t = scale_speed(t, 0.65, near=detect_objects('Sofa'))",)),
+        ("fly up to the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # "up to": a place
     ],
 )
 def test_directions_already_moved_places_parts_and_paces_add_nothing(
     words: str, steps: tuple[str, ...]
 ) -> None:
     code = program(*steps)
-    assert add_asked_directions(code, [words], NAMES) == (code, [])
+    assert add_asked_directions(code, [words]) == (code, [])
 
 
 def test_the_added_shift_takes_the_clause_number_from_the_readers_after_it() -> None:
@@ -60,3 +62,11 @@ def test_the_added_shift_takes_the_clause_number_from_the_readers_after_it() -> 
         program("t = move_closer(t, detect_objects('Sofa'))"), ["sink by 0.15, nearing the sofa"], NAMES
     )
     assert "t = shift(t, 'down', 0.15)" in code.splitlines()
+
+
+def test_a_clause_that_also_names_an_object_still_asks_its_direction() -> None:
+    code, _ = add_asked_directions(
+        program("t = move_closer(t, detect_objects('lamp'), 'slightly')"),
+        ["drift left a little, keeping a smaller gap to the lamp"],
+    )
+    assert code.splitlines()[1] == "t = shift(t, 'left', 'a little')"

@@ -3,9 +3,10 @@
 A small model drops a clause of a compound instruction: "go to the front decelerating to 0 speed"
 came back as a deceleration alone, "raise the path slightly" beside a moved start as the start's
 move alone. A clause that names exactly one direction (``words.said_directions``: "front", "raise",
-"descend", ...), no object of the scene, no part or end of the path, no negation, and uses the
-direction word as a move rather than a place ("above the lamp", "left of the box" are places) asks
-the path to move that way. When no step of the code has that direction or its opposite among its
+"descend", ...), no part or end of the path, no negation, and uses the direction word as a move
+rather than a place ("above the lamp", "left of the box", "up to the lamp" are places) asks the path
+to move that way, whatever else it asks ("go slightly upwards keeping a smaller distance from the
+chair"). When no step of the code has that direction or its opposite among its
 arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contradiction, which the
 effect report flags, not a dropped clause) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
@@ -21,11 +22,11 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, called_name
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
-from trajadapt.readers.words import clauses, intensity_word, names_in, said_directions
+from trajadapt.readers.words import clauses, intensity_word, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
-    r"\b(?:above|below|beneath|underneath|under|over|behind|atop)\b"
+    r"\b(?:above|below|beneath|underneath|under|over|behind|atop|up to|down to)\b"
     r"|\b(?:left|right|front|back|top|bottom|side)\s+(?:side\s+)?of\b",
     re.I,
 )
@@ -39,9 +40,8 @@ NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
 
 
-def add_asked_directions(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with a shift for each direction a clause asks and no step makes (see the module)."""
-    names = list(names)
     lines = code.splitlines()
     moved = {direction for line in lines for direction in _directions(line)}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
@@ -51,7 +51,7 @@ def add_asked_directions(code: str, asked: Iterable[str], names: Iterable[str]) 
     added: list[str] = []
     notes: list[str] = []
     for clause in (c for words in asked for c in clauses(words)):
-        direction = _asked_move(clause, names)
+        direction = _asked_move(clause)
         if direction is None or {direction, OPPOSITE_DIRECTIONS[direction]} & moved:
             continue
         if heights and direction in ("up", "down"):
@@ -86,10 +86,10 @@ def _directions(line: str) -> set[str]:
     }
 
 
-def _asked_move(clause: str, names: list[str]) -> str | None:
+def _asked_move(clause: str) -> str | None:
     """The one direction the clause asks the path to move in, or None."""
     directions = said_directions(clause)
-    if len(directions) != 1 or names_in(clause, names):
+    if len(directions) != 1:
         return None
     if PLACE_OF.search(clause) or PART_OR_END.search(clause) or NEGATION.search(clause):
         return None

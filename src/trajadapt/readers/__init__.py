@@ -48,10 +48,10 @@ class ReaderNote:
 
 READERS: tuple[Reader, ...] = (
     Reader("unasked-steps", "steps of a topic the words never mention", leave_out_unasked),
-    Reader("asked-directions", "a direction a clause asks and no step makes",
-           lambda code, asked, _: add_asked_directions(code, asked)),
     Reader("unstated-amounts", "amounts the words never give",
            lambda code, asked, _: replace_unstated_amounts(code, asked)),
+    Reader("asked-directions", "a direction a clause asks and no step makes",
+           lambda code, asked, _: add_asked_directions(code, asked)),
     Reader("stated-amounts", "a clause's one direction and amount, used as said",
            lambda code, asked, _: use_stated_amounts(code, asked)),
     Reader("height-asks", "heights said as a limit or a level",

@@ -70,3 +70,15 @@ def test_a_clause_that_also_names_an_object_still_asks_its_direction() -> None:
         ["drift left a little, keeping a smaller gap to the lamp"],
     )
     assert code.splitlines()[1] == "t = shift(t, 'left', 'a little')"
+
+
+def test_the_shift_goes_to_the_variable_the_trajectory_was_read_into() -> None:
+    code, _ = add_asked_directions(
+        "path = get_trajectory()\npath = smooth(path)\nmodified_trajectory = path", ["head forward"]
+    )
+    assert code.splitlines()[1] == "path = shift(path, 'front')"
+
+
+def test_an_answer_with_no_step_is_left_alone() -> None:
+    code = "modified_trajectory = get_trajectory()"
+    assert add_asked_directions(code, ["head forward"]) == (code, [])

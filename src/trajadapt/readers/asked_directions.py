@@ -10,8 +10,9 @@ chair"). When no step of the code has that direction or its opposite among its
 arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contradiction, which the
 effect report flags, not a dropped clause) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
-the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone: what
-it moves cannot be read. A review note says so.
+the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone (what
+it moves cannot be read), and so is code with no step at all (it keeps the path: no clause of a
+compound answer was dropped). A review note says so.
 """
 
 from __future__ import annotations
@@ -46,8 +47,10 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     moved = {direction for line in lines for direction in _directions(line)}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
     start = next((i + 1 for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
-    if start is None or not all(_readable(line) for line in lines):
-        return code, []
+    variable = lines[start - 1].split("=")[0].strip() if start else "t"
+    steps = [line for line in lines if called_name(line) in SKILL_NAMES]
+    if start is None or not steps or not all(_readable(line) for line in lines):
+        return code, []  # no step at all is an answer that keeps the path, not a dropped clause
     added: list[str] = []
     notes: list[str] = []
     for clause in (c for words in asked for c in clauses(words)):
@@ -57,7 +60,7 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
         if heights and direction in ("up", "down"):
             continue
         word = intensity_word(clause)
-        step = f"t = shift(t, {direction!r}{f', {word!r}' if word else ''})"
+        step = f"{variable} = shift({variable}, {direction!r}{f', {word!r}' if word else ''})"
         added.append(step)
         moved.add(direction)
         notes.append(f"added `{step}`: the words ask to go {direction} ({clause.strip()!r}) and no step does")

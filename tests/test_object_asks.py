@@ -31,6 +31,20 @@ def test_each_clause_asks_one_thing_of_the_one_object_it_names(
 
 
 @pytest.mark.parametrize(
+    ("words", "asks"),
+    [
+        ("approach the sofa giving the lamp a wider berth", {"sofa": "closer", "Lamp": "away"}),
+        ("hug the red box while slowing near the Lamp", {"red box": "closer", "Lamp": "slower"}),
+    ],
+)
+def test_each_object_of_a_joined_instruction_is_read_in_its_own_clause(
+    words: str, asks: dict[str, str]
+) -> None:
+    """One splitter: a participle or 'while' that starts a request gives each object its own clause."""
+    assert {name: ask.relation for name, ask in object_asks(words, NAMES).items()} == asks
+
+
+@pytest.mark.parametrize(
     "words",
     [
         "move closer to the sofa and then further from the sofa",  # two different asks

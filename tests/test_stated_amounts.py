@@ -14,7 +14,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
     [
         ("climb upwards by 0.5 while passing a bit closer to the lamp", {"up": 0.5}),
         ("go left by 20, then lower by 5", {"left": 20.0, "down": 5.0}),
-        ("go up and left by 0.2", {"left": 0.2}),  # 'and' ends the clause of 'up'
+        # one clause (split_clauses keeps "and left" with "go up", as "0.5 to the left and 0.3 up"):
+        # two directions, one amount, so neither is given it
+        ("go up and left by 0.2", {}),
+        ("go up by 0.1, then left by 0.2", {"up": 0.1, "left": 0.2}),
         ("go left or right by 0.2", {}),  # two directions in one clause
         ("go left by 0.2 or by 0.3", {}),  # two numbers
         ("go left by 0.2. go left by 0.3", {}),  # two amounts for one direction

@@ -11,12 +11,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from trajadapt.backends.scripted import ScriptedBackend
-from trajadapt.clauses.split import split_clauses
 from trajadapt.llm.example_bank import default_bank
 from trajadapt.memory import choose_examples
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.memory.recall import shipped_bank
 from trajadapt.model.case import Case
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session import AdaptationSession, SessionSettings
 

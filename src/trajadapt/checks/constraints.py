@@ -20,7 +20,8 @@ import numpy as np
 
 from trajadapt.model.geometry import Array
 from trajadapt.model.scene import Scene, SceneObject, name_key
-from trajadapt.readers.words import clauses, names_in
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import names_in
 
 _T = TypeVar("_T")
 
@@ -168,7 +169,7 @@ def approached_objects(instruction: str, names: Sequence[str]) -> tuple[str, ...
     ('cup',)
     """
     found = []
-    for clause in clauses(instruction):
+    for clause in split_clauses(instruction, names):
         if not APPROACH_WORDS.search(clause) or AWAY_WORDS.search(clause):
             continue
         found += names_in(clause, names)

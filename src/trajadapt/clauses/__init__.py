@@ -8,7 +8,7 @@ clause's step, run alone, contradicts in its words). The session runs it (``Adap
 
 from trajadapt.clauses.check import clause_findings
 from trajadapt.clauses.grammar import attribute_lines, clause_answer_grammar, step_grammar
-from trajadapt.clauses.split import only_keeps, split_clauses
+from trajadapt.readers.clause_split import only_keeps, split_clauses
 
 __all__ = [
     "attribute_lines",

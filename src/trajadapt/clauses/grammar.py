@@ -19,7 +19,6 @@ import re
 from collections.abc import Sequence
 from functools import lru_cache
 
-from trajadapt.clauses.split import only_keeps
 from trajadapt.llm.answer_grammar import (
     LANDMARKS,
     NEWLINE,
@@ -31,6 +30,7 @@ from trajadapt.llm.answer_grammar import (
 )
 from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Some, alt, renamed, seq
 from trajadapt.model.geometry import PART_WORDS
+from trajadapt.readers.clause_split import only_keeps
 from trajadapt.readers.words import names_in, whole_words
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.skills import SKILLS

@@ -21,11 +21,11 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from trajadapt.clauses.split import split_clauses
 from trajadapt.errors import MemoryUnusable
 from trajadapt.files.atomic_files import publish_bytes
 from trajadapt.llm.example_bank import Example
 from trajadapt.memory.placeholders import PLACEHOLDER, abstract, fill, looked_up
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.sandbox.guard import check_code
 
 FORMAT = {"trajadapt_memory": 1}

@@ -15,7 +15,7 @@ opt-in: see docs/benchmarks.md, "Issue #24, session 11" and "Issue #28, session 
 from __future__ import annotations
 
 from trajadapt.clauses.grammar import said_places
-from trajadapt.clauses.split import split_clauses
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace, said_directions
 
 MARK = "@"

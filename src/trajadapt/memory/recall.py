@@ -14,10 +14,10 @@ How the rest are chosen is ``by``:
 
 - ``"words"`` (the default): BM25 over the whole instruction's word stems only.
 - ``"clauses"``: the index also holds what the words ask (``meaning.asked_meanings``),
-  and an instruction of several clauses (``clauses.split_clauses``) first gets the best example of
-  each clause, then the best for the whole; the chosen are shown in the order of their score for the
-  whole instruction. Ranked by the whole alone, the clause with the rarest words takes every place
-  ("move the start 0.2 right, and also raise the path slightly" showed no example going up).
+  and an instruction of several clauses (``readers.clause_split.split_clauses``) first gets the best
+  example of each clause, then the best for the whole; the chosen are shown in the order of their
+  score for the whole instruction. Ranked by the whole alone, the clause with the rarest words takes
+  every place ("move the start 0.2 right, and also raise the path slightly" showed no example going up).
   Measured on 2026-11-25 (docs/benchmarks.md, "Issue #24, session 11"): 5 more of 106 blind
   paraphrases passed, 6 fewer of 111 dev cases in their original words (both halves lost), so it
   is not the default.
@@ -29,11 +29,11 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Literal
 
-from trajadapt.clauses.split import split_clauses
 from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, terms
 from trajadapt.memory.bank import RememberedExample
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.memory.placeholders import mentioned
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import amount_size, stated_numbers
 
 NEAR = 0.5

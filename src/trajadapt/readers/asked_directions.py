@@ -23,7 +23,8 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, called_name
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
-from trajadapt.readers.words import clauses, intensity_word, said_directions
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import intensity_word, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
@@ -53,7 +54,7 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
         return code, []  # no step at all is an answer that keeps the path, not a dropped clause
     added: list[str] = []
     notes: list[str] = []
-    for clause in (c for words in asked for c in clauses(words)):
+    for clause in (c for words in asked for c in split_clauses(words)):
         direction = _asked_move(clause)
         if direction is None or {direction, OPPOSITE_DIRECTIONS[direction]} & moved:
             continue

@@ -49,11 +49,11 @@ from trajadapt.code_parse import (
     parse_code,
 )
 from trajadapt.readers.object_words import ObjectAsk, asked_words, object_asks
+from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
     intensity_word,
     is_stated,
     names_in,
-    speed_factor,
     stated_numbers,
 )
 

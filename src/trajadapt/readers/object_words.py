@@ -1,6 +1,6 @@
 """What the user's words ask of each object they name: come closer, keep away, a side, a pace near it.
 
-Read clause by clause (``words.clauses`` with "while" kept inside); an object that two clauses ask
+Read clause by clause (``clause_split.split_clauses``: "while" stays inside); an object that two clauses ask
 different things of is asked nothing. Used by the readers of object steps and of directions.
 """
 
@@ -11,6 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
     AWAY,
     CLOSER,
@@ -19,7 +20,6 @@ from trajadapt.readers.words import (
     PLACE_WORDS,
     SLOWER,
     asks_pace,
-    clauses,
     longest_names,
     names_in,
 )
@@ -45,7 +45,7 @@ class ObjectAsk:
 def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
     """The one thing the clauses of ``words`` ask of each object they name (none where two clauses differ)."""
     asks: dict[str, list[ObjectAsk]] = {}
-    for clause in clauses(words, keep_while=True):
+    for clause in split_clauses(words, list(names)):
         named = longest_names(names_in(clause, names))
         ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
         if ask is not None:

@@ -4,7 +4,7 @@ A small model writes ``shift(t, 'left')`` for "shift the starting position to th
 path moves, the start stays), ``shift_goal(t, 'back', 1.5)`` or ``move_closer(t,
 detect_objects('goal'))`` for "move backwards by 1.5 after reaching the goal position" (the path
 never goes past its goal), and ``move_away(t, detect_objects('goal'))`` for "the goal position a
-little downwards". Each clause of the user's words (split by ``words.clauses``)
+little downwards". Each clause of the user's words (split by ``clause_split.split_clauses``)
 that names one part of the path and one direction asks for a move of that part:
 
 - the start ("the start", "starting position", "initial point", "beginning") -> ``shift_start``;
@@ -41,11 +41,11 @@ from trajadapt.code_parse import (
     parse_code,
 )
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
     NUMBER_TEXT,
     NUMBER_WORDS,
     SPEED_WORDS,
-    clauses,
     intensity_word,
     names_in,
     said_directions,
@@ -112,7 +112,7 @@ class PartMove:
 def part_moves(words: str) -> list[PartMove]:
     """The part moves the clauses of ``words`` ask for (see the module docstring)."""
     moves = []
-    for clause in clauses(words):
+    for clause in split_clauses(words):
         move = _clause_move(clause)
         if move is not None:
             moves.append(move)

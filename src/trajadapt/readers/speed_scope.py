@@ -15,14 +15,15 @@ import ast
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
-from trajadapt.readers.words import PLACE_WORDS, SPEED_WORDS, clauses, longest_names, names_in
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import PLACE_WORDS, SPEED_WORDS, longest_names, names_in
 
 PLACEABLE_SPEED_STEPS = ("scale_speed", "set_speed")  # the speed steps that take near=, radius=, part=
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
     """The one object the one speed clause of ``words`` places the speed change at, if there is one."""
-    speed_clauses = [c for c in clauses(words, keep_while=True) if SPEED_WORDS.search(c)]
+    speed_clauses = [c for c in split_clauses(words, list(names)) if SPEED_WORDS.search(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
     longest = longest_names(names_in(speed_clauses[0], names))

@@ -2,7 +2,7 @@
 
 A small model writes ``shift(t, 'up', 'slightly')`` for "go upwards by 0.2 walking slightly closer to
 the table": the vague word belongs to another part of the sentence, the user's number is lost. Each
-clause (split by ``words.clauses``) with exactly one direction word and exactly
+clause (split by ``clause_split.split_clauses``) with exactly one direction word and exactly
 one "by <number>" gives that direction its amount; the one directional step in that direction
 (``shift``, ``shift_goal``, ``shift_start``, ``shift_part``) whose amount is a word or missing gets
 the number. A step with a number of its own keeps it (``unstated_amounts`` judges numbers), and a
@@ -16,7 +16,8 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
-from trajadapt.readers.words import NUMBER_TEXT, clauses, said_directions
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import NUMBER_TEXT, said_directions
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
 BY_NUMBER = re.compile(rf"\bby\s+({NUMBER_TEXT})\b", re.I)
@@ -25,7 +26,7 @@ BY_NUMBER = re.compile(rf"\bby\s+({NUMBER_TEXT})\b", re.I)
 def direction_amounts(words: str) -> dict[str, float]:
     """The amount each direction is given in the clauses of ``words`` ("upwards by 0.2" -> up: 0.2)."""
     amounts: dict[str, list[float]] = {}
-    for clause in clauses(words):
+    for clause in split_clauses(words):
         said = said_directions(clause)
         numbers = BY_NUMBER.findall(clause)
         if len(said) == 1 and len(numbers) == 1:

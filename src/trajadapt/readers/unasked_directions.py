@@ -34,13 +34,13 @@ from trajadapt.code_parse import (
 )
 from trajadapt.model.geometry import PART_WORDS
 from trajadapt.readers.object_words import asked_words, object_asks
+from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
     FASTER,
     SLOWER,
     intensity_word,
     longest_names,
     said_directions,
-    speed_factor,
     whole_words,
 )
 

@@ -22,7 +22,8 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
-from trajadapt.readers.words import FASTER, SLOWER, intensity_word, is_stated, speed_factor, stated_numbers
+from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.words import FASTER, SLOWER, intensity_word, is_stated, stated_numbers
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}

@@ -12,29 +12,9 @@ from collections.abc import Iterable
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
-from trajadapt.skills.speed import SPEED_FACTORS
 
 NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
 """A number as the user writes it ("2", "0.2", ".5"); readers put it in their own phrases."""
-
-SENTENCE_MARKS = r"[,;!?]|\.(?!\d)"
-"""Punctuation that ends a clause; the point of a decimal number ("by 0.2") does not."""
-
-CLAUSE_BREAKS = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|while)\b", re.I)
-"""Where one clause of an instruction ends and the next begins."""
-
-CLAUSE_BREAKS_KEEPING_WHILE = re.compile(rf"{SENTENCE_MARKS}|\b(?:and|then|but|also)\b", re.I)
-"""The same, except that "while" stays inside a clause: in "faster while passing the X" it says where
-the speed changes (the readers of speed and of objects split so)."""
-
-
-def clauses(words: str, keep_while: bool = False) -> list[str]:
-    """The clauses of ``words``, split at punctuation, "and", "then", "but" and "while".
-
-    With ``keep_while``, "while" stays inside a clause and "also" splits instead.
-    """
-    return (CLAUSE_BREAKS_KEEPING_WHILE if keep_while else CLAUSE_BREAKS).split(words)
-
 
 PLACE_WORDS = re.compile(
     r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
@@ -168,12 +148,6 @@ def intensity_word(words: str) -> str | None:
 def is_stated(value: float, numbers: list[float]) -> bool:
     """Whether ``value`` is one of the user's numbers (up to a unit conversion)."""
     return any(abs(abs(value) - n * f) <= 1e-6 * max(1.0, n * f) for n in numbers for f in UNIT_FACTORS)
-
-
-def speed_factor(words: str, faster: bool) -> float:
-    """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower."""
-    clause = next((c for c in clauses(words) if SPEED_WORDS.search(c)), "")
-    return SPEED_FACTORS["faster" if faster else "slower"][amount_size(clause)]
 
 
 def amount_size(words: str) -> str:

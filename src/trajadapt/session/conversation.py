@@ -12,7 +12,6 @@ from dataclasses import replace
 
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.clauses.grammar import MAX_CLAUSES, clause_answer_grammar
-from trajadapt.clauses.split import split_clauses
 from trajadapt.errors import AnswerParseError, SessionStateError
 from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
@@ -22,6 +21,7 @@ from trajadapt.memory import MemoryBank, asks_all_of
 from trajadapt.model.case import Case
 from trajadapt.prompts import chosen_examples, first_messages, render
 from trajadapt.readers import ReaderNote, read_against_words
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session.log import SessionLog

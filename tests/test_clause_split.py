@@ -1,6 +1,6 @@
 import pytest
 
-from trajadapt.clauses.split import only_keeps, split_clauses
+from trajadapt.readers.clause_split import only_keeps, split_clauses
 
 NAMES = ["box", "chair", "table", "lamp", "red mug"]
 
@@ -91,6 +91,58 @@ def test_a_participle_that_asks_something_more_is_a_clause(words, clauses):
 )
 def test_a_participle_that_qualifies_stays(words):
     assert split_clauses(words, NAMES) == (words,)
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        ("head left while easing to a halt at the end", ("head left", "easing to a halt at the end")),
+        ("climb a bit while keeping further from the sofa", ("climb a bit", "keeping further from the sofa")),
+        ("speed up while drifting right", ("speed up", "drifting right")),
+        (
+            "circle the lamp while edging closer to the table",
+            ("circle the lamp", "edging closer to the table"),
+        ),
+    ],
+)
+def test_while_before_another_request_breaks(words, clauses):
+    assert split_clauses(words, [*NAMES, "sofa"]) == clauses
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "speed up while you are next to the lamp",
+        "crawl while moving past the red mug",
+        "go slower while in the vicinity of the table",
+        "hover above the lamp for a while",
+    ],
+)
+def test_while_before_a_place_or_as_a_noun_stays(words):
+    assert split_clauses(words, NAMES) == (words,)
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        # after a comma, a participle that names another object or turns a move another way asks more
+        (
+            "keep 0.3 from the lamp, slowing near the table",
+            ("keep 0.3 from the lamp", "slowing near the table"),
+        ),
+        (
+            "push the goal 0.1 left, sinking the path a bit",
+            ("push the goal 0.1 left", "sinking the path a bit"),
+        ),
+        # a verb that only ends in -ing is no participle
+        (
+            "go up by 0.1 and bring the path nearer the lamp",
+            ("go up by 0.1", "bring the path nearer the lamp"),
+        ),
+    ],
+)
+def test_a_piece_that_asks_more_than_the_one_before_is_a_clause(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
 
 
 @pytest.mark.parametrize(

@@ -1,7 +1,9 @@
 """The clauses of an instruction: the units that each get their own step.
 
-One splitter for the whole instruction. It breaks at punctuation and at the words that join two
-requests (``and``, ``then``, ``but``, ``also``), then joins back what is not a request of its own:
+One splitter for the whole product: the readers, the clearance's exemptions, the per-clause check,
+the meaning tokens and the memory all read these clauses. It breaks at punctuation and at the words
+that join two requests (``and``, ``then``, ``but``, ``also``), then joins back what is not a request
+of its own:
 
 - a piece that only names things ("between the chair *and the table*", "left *and right*"), or
   only qualifies the one before it ("*, a lot further*", "*, bulging upwards*", "*and keep it smooth*"
@@ -14,8 +16,10 @@ chair") and, after a comma, where it asks about another kind of thing than the p
 the sink, *slowing* down there" asks a pace after a place; "arc over the middle, *bulging* upwards"
 only says more about the place).
 
-"while" and "as" do not break a clause ("hurry while passing the printer" asks one thing); a
-clause may need two steps ("go up by 0.1 at a constant speed of 0.2"), so a clause is not a step.
+"while" breaks before a piece that is more than a place: "head left *while easing to a halt at the
+end*" asks two things, but "hurry *while passing the printer*" asks one (the piece after "while"
+only says where). "as" never breaks. A clause may need two steps
+("go up by 0.1 at a constant speed of 0.2"), so a clause is not a step.
 """
 
 from __future__ import annotations
@@ -23,9 +27,17 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
-from trajadapt.readers.words import asked_kinds, names_in, said_directions, whole_words
+from trajadapt.readers.words import (
+    AWAY,
+    CLOSER,
+    PLACE_WORDS,
+    asked_kinds,
+    names_in,
+    said_directions,
+    whole_words,
+)
 
-BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also)\b", re.I)
+BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also|(?<!\ba )while)\b", re.I)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
 
 LEAD_INS = re.compile(
@@ -107,7 +119,8 @@ def _at_participles(joiner: str, piece: str, names: Sequence[str]) -> list[tuple
 
 
 NOT_PARTICIPLES = frozenset(
-    "during thing nothing something anything everything building ceiling morning evening string".split()
+    "during thing nothing something anything everything building ceiling morning evening string "
+    "bring swing spring sling fling cling wring sting".split()
 )
 
 
@@ -134,14 +147,42 @@ def _completes(word: str, object_ends: set[str]) -> bool:
 
 def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[str]) -> bool:
     """Whether a piece is a clause of its own rather than more words of the previous one."""
+    if joiner.strip().lower() == "while":
+        return not _only_a_place(piece, names)
     if joiner.strip() not in ("", ",", "and", "but", "also"):
         return True  # a sentence mark, "then"
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
         return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
     if participle and joiner.strip() == ",":
-        return bool(asked_kinds(piece) - asked_kinds(previous))
+        return bool(asked_kinds(piece) - asked_kinds(previous)) or _asks_more(piece, previous, names)
     return _asks_something(piece, names)
+
+
+MOVING = frozenset(
+    "go going goes move moving moves travel travelling traveling drive driving walk walking fly flying "
+    "past in at on through".split()
+)
+"""Words that only say the robot moves somewhere ("while going past the box"): no request of their own."""
+
+
+def _asks_more(piece: str, previous: str, names: Sequence[str]) -> bool:
+    """Whether a piece names an object the one before does not, or a second direction after one.
+
+    "stay 0.2 from the marmoset, *easing off near the paddle*" and "move the start 0.2 right,
+    *lifting the path slightly*" ask something more; "arc over the middle, *bulging upwards*" does not.
+    """
+    before, said = said_directions(previous), said_directions(piece)
+    return bool(set(names_in(piece, names)) - set(names_in(previous, names))) or bool(
+        before and said - before
+    )
+
+
+def _only_a_place(piece: str, names: Sequence[str]) -> bool:
+    """Whether a piece only says where along the path ("passing close to the quill", "you are near it")."""
+    if CLOSER.search(piece) or AWAY.search(piece) or said_directions(piece):
+        return False  # "while moving nearer to the bow" asks to come closer
+    return not set(_content_words(PLACE_WORDS.sub(" ", piece), names)) - MOVING
 
 
 def _content_words(piece: str, names: Sequence[str]) -> list[str]:
@@ -164,7 +205,7 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
     if not [w for w in words if w not in DIRECTION_WORDS]:
         return False
     first = piece.split()[0].lower()
-    return not (first.endswith("ing") or first.endswith("ly"))
+    return not (_is_participle(first) or first.endswith("ly"))
 
 
 def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:

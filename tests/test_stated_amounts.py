@@ -18,6 +18,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         # two directions, one amount, so neither is given it
         ("go up and left by 0.2", {}),
         ("go up by 0.1, then left by 0.2", {"up": 0.1, "left": 0.2}),
+        # a number beside its direction, without "by" (words.directed_numbers)
+        ("drift 0.3 towards the right, then descend 0.05", {"right": 0.3, "down": 0.05}),
+        ("carry on 1.2 further back", {"back": 1.2}),
+        ("shift the first 4 waypoints up", {}),  # a count, not an amount
         ("go left or right by 0.2", {}),  # two directions in one clause
         ("go left by 0.2 or by 0.3", {}),  # two numbers
         ("go left by 0.2. go left by 0.3", {}),  # two amounts for one direction

@@ -8,7 +8,9 @@ on many threads. Every host-side reader of generated code parses through ``parse
 from __future__ import annotations
 
 import ast
+import re
 import threading
+from collections.abc import Collection
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS
 
@@ -91,6 +93,13 @@ def detected_name(node: ast.expr) -> str | None:
     ):
         return str(node.args[0].value)
     return None
+
+
+def plain_line(line: str, callables: Collection[str]) -> bool:
+    """A blank line, ``name = name`` or one whose call is one of ``callables``: code a reader can follow."""
+    if not line.strip() or called_name(line) in callables:
+        return True
+    return bool(re.fullmatch(r"\s*[A-Za-z_]\w*\s*=\s*[A-Za-z_]\w*\s*", line))
 
 
 def in_place_of(line: str, new: str) -> str:

@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from trajadapt.readers.asked_directions import add_asked_directions
+from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
@@ -59,6 +60,8 @@ READERS: tuple[Reader, ...] = (
     Reader("part-scope", "the part of the path a clause moves",
            lambda code, asked, _: scope_to_parts(code, asked)),
     Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
+    Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
+           add_asked_relations),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
 )  # fmt: skip

@@ -21,10 +21,10 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, called_name
+from trajadapt.code_parse import assigned_call, called_name, plain_line
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import intensity_word, said_directions
+from trajadapt.readers.words import PART_OR_END, intensity_word, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
@@ -33,11 +33,6 @@ PLACE_OF = re.compile(
     re.I,
 )
 """A direction word used as a place ("above the lamp", "to the left of the box"), not a move."""
-PART_OR_END = re.compile(
-    r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
-    r"|cent(?:er|re)|waypoints?|points?|part|section|segment|portion)\b",
-    re.I,
-)
 NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
 
@@ -50,7 +45,11 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     start = next((i + 1 for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
     variable = lines[start - 1].split("=")[0].strip() if start else "t"
     steps = [line for line in lines if called_name(line) in SKILL_NAMES]
-    if start is None or not steps or not all(_readable(line) for line in lines):
+    if (
+        start is None
+        or not steps
+        or not all(plain_line(line, (*SKILL_NAMES, "get_trajectory", "detect_objects")) for line in lines)
+    ):
         return code, []  # no step at all is an answer that keeps the path, not a dropped clause
     added: list[str] = []
     notes: list[str] = []
@@ -68,13 +67,6 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     if not added:
         return code, []
     return "\n".join([*lines[:start], *added, *lines[start:]]), notes
-
-
-def _readable(line: str) -> bool:
-    """A blank line, ``name = name`` or ``name = function(...)``: code whose moves the reader can see."""
-    if not line.strip() or called_name(line) in SKILL_NAMES + ("get_trajectory", "detect_objects"):
-        return True
-    return bool(re.fullmatch(r"\s*[A-Za-z_]\w*\s*=\s*[A-Za-z_]\w*\s*", line))
 
 
 def _directions(line: str) -> set[str]:

@@ -46,6 +46,7 @@ from trajadapt.readers.words import (
     NUMBER_TEXT,
     NUMBER_WORDS,
     SPEED_WORDS,
+    directed_numbers,
     intensity_word,
     names_in,
     said_directions,
@@ -147,7 +148,10 @@ def _moved_part(pattern: re.Pattern[str], clause: str) -> bool:
 
 def _clause_amount(clause: str) -> float | str | None:
     number = AMOUNT_NUMBER.search(clause)
-    return float(number.group(1)) if number else intensity_word(clause)
+    directed = directed_numbers(clause)
+    if number:
+        return float(number.group(1))
+    return directed[0] if len(directed) == 1 else intensity_word(clause)
 
 
 def _first_count(clause: str) -> int:

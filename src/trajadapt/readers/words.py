@@ -35,6 +35,15 @@ PATH_WORDS = re.compile(
 """Word stems that ask where the path goes (its place or shape), not how fast."""
 
 
+PART_OR_END = re.compile(
+    r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
+    r"|cent(?:er|re)|waypoints?|points?|part|section|segment|portion)\b",
+    re.I,
+)
+"""Words that place a request at a part or an end of the path ("the start", "after the goal", "the
+first half"), so it does not ask the whole path to move."""
+
+
 PACE_PHRASES = re.compile(
     r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)\s+(?:down|up)\b",
     re.I,
@@ -102,6 +111,27 @@ OF_SPEED = re.compile(rf"\b[a-z]+\s+{SPEED_NOUN}", re.I)
 
 DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 """Every word that names a direction, to its canonical direction."""
+
+
+_DIRECTION_ALTERNATIVES = "|".join(sorted(DIRECTION_WORDS, key=len, reverse=True))
+DIRECTED_NUMBER = re.compile(
+    rf"\bby\s+({NUMBER_TEXT})(?![\w.])"
+    rf"|(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
+    rf"(?:{_DIRECTION_ALTERNATIVES})\b"
+    rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+({NUMBER_TEXT})(?![\w.])(?!\s*(?:(?:way)?points?|steps?|times?|turns?))",
+    re.I,
+)
+"""A number given to a direction: "by 0.2", "0.2 to the left", "0.2 further left", "rise 0.2" (not
+"up 3 times" or "left 10 points", which count)."""
+
+
+def directed_numbers(clause: str) -> list[float]:
+    """The numbers ``clause`` gives a direction (``DIRECTED_NUMBER``), in order.
+
+    >>> directed_numbers("continue moving 0.2 to the left")
+    [0.2]
+    """
+    return [float(next(group for group in found if group)) for found in DIRECTED_NUMBER.findall(clause)]
 
 
 def said_directions(words: str) -> set[str]:

@@ -1,0 +1,60 @@
+"""A closer/further a clause asks of an object, with no step that moves by it, gets one (readers.asked_relations)."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.asked_relations import add_asked_relations
+
+NAMES = ["lamp", "Sofa", "red box"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "steps", "added"),
+    [
+        ("halve the speed and give the sofa a wider berth", ("t = scale_speed(t, 0.5)",),
+         "t = move_away(t, detect_objects('Sofa'))"),
+        ("raise the path by 0.1 while drifting a lot nearer to the red box", ("t = shift(t, 'up', 0.1)",),
+         "t = move_closer(t, detect_objects('red box'), 'a lot')"),
+        # the lamp only names where the speed changes: no step moves the path by it
+        ("hurry, and keep more distance from the lamp", ("t = scale_speed(t, 1.4, near=detect_objects('lamp'))",),
+         "t = move_away(t, detect_objects('lamp'))"),
+    ],
+)  # fmt: skip
+def test_a_dropped_relation_becomes_the_last_step(words: str, steps: tuple[str, ...], added: str) -> None:
+    code, notes = add_asked_relations(program(*steps), [words], NAMES)
+    assert code.splitlines()[1:-1] == [*steps, added]
+    assert "no step moves the path by it" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        # a step already names the object: right or wrong, it answers the clause (object_asks reads it)
+        ("come closer to the lamp", ("t = avoid(t, detect_objects('lamp'), 0.2)",)),
+        ("come closer to the lamp", ("t = pass_through(t, detect_objects('lamp'))",)),
+        ("come closer to the lamp", ("lamp = detect_objects('lamp')", "t = move_closer(t, lamp)")),
+        # a part or an end of the path, a pace near the object, two asks of one object
+        ("after the goal, head closer to the sofa", ("t = extend(t, 0.2)",)),
+        ("slow down near the sofa", ("t = shift(t, 'left')",)),
+        ("closer to the sofa, then further from the sofa", ("t = smooth(t)",)),
+        # no step at all keeps the path; code a reader cannot follow is left alone
+        ("keep further from the red box", ()),
+        ("keep further from the red box", ("for i in range(3):", "    t = smooth(t)")),
+    ],
+)
+def test_answered_placed_or_unclear_relations_add_nothing(words: str, steps: tuple[str, ...]) -> None:
+    code = program(*steps)
+    assert add_asked_relations(code, [words], NAMES) == (code, [])
+
+
+def test_the_reader_runs_in_the_stage_and_names_itself() -> None:
+    words = ["cut the speed in half and keep further from the lamp"]
+    code, notes = read_against_words(program("t = scale_speed(t, 0.5)"), words, NAMES)
+    assert code.splitlines()[1:-1] == ["t = scale_speed(t, 0.5)", "t = move_away(t, detect_objects('lamp'))"]
+    assert [note.reader for note in notes] == ["asked-relations"]

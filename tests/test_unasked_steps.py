@@ -103,3 +103,14 @@ def test_increase_or_decrease_of_speed_is_not_a_distance_word() -> None:
     )
     kept, notes = leave_out_unasked(code, ["Decrease the speed near the rocker"], ["rocker"])
     assert "move_away" not in kept and "a change of distance" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [("ear", "hurry, and pass nearer to the ear"), ("par", "hurry and move apart from the par")],
+)
+def test_a_name_inside_a_word_leaves_the_word_alone(name: str, words: str) -> None:
+    """Only whole words are the object's name: the object 'ear' does not hide the 'near' of 'nearer'."""
+    step = f"t = move_closer(t, detect_objects('{name}'))"
+    code = f"t = get_trajectory()\n{step}\nt = scale_speed(t, 1.4)\nmodified_trajectory = t"
+    assert leave_out_unasked(code, [words], [name]) == (code, [])

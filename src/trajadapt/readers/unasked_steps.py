@@ -183,12 +183,13 @@ def leave_out_unasked(
 ) -> tuple[str, list[str]]:
     """``code`` without the steps of a topic no ``asked`` text mentions, and a note per step left out.
 
-    Object names are not read as words ("stop watch" does not ask to stop). Only lines of the form
+    Object names are not read as words ("stop watch" does not ask to stop), and only whole words are
+    names (the object "ear" leaves "nearer" as it is). Only lines of the form
     ``t = skill(t, ...)`` (the same variable in and out) are left out.
     """
     words = " ".join(asked).lower()
     for name in sorted(object_names, key=len, reverse=True):
-        words = words.replace(name.lower(), " ") if name else words
+        words = re.sub(rf"\b{re.escape(name.lower())}\b", " ", words) if name.strip() else words
     kept, notes = [], []
     for line in code.splitlines():
         match = STATEMENT.match(line)

@@ -3,6 +3,7 @@
 import pytest
 
 from trajadapt.code_parse import parse_code
+from trajadapt.readers import READERS
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
@@ -32,6 +33,8 @@ def test_every_reader_leaves_nested_code_as_it_is(code):
         assert reader(program, asked, NAMES)[0] == program
     for reader in (replace_unstated_amounts, use_stated_amounts, relate_heights, scope_to_parts):
         assert reader(program, asked)[0] == program
+    for stage in READERS:  # and every reader of the stage, in case one is added without a line here
+        assert stage.read(program, asked, NAMES)[0] == program, stage.name
 
 
 def test_ordinary_skill_code_still_parses():

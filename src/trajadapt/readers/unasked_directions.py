@@ -30,6 +30,7 @@ from trajadapt.code_parse import (
     called_name,
     direction_argument,
     in_place_of,
+    parse_code,
     step_on_object,
 )
 from trajadapt.model.geometry import PART_WORDS
@@ -49,6 +50,10 @@ SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
 
 def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one shift in an unsaid direction made into what the words ask, and a note."""
+    try:
+        parse_code(code)
+    except SyntaxError:
+        return code, []  # code the parser refuses (absurdly nested) is left as it is
     words, names = " ".join(asked), list(names)
     lines = code.splitlines()
     unsaid = [

@@ -13,13 +13,14 @@ of its own:
 A participle that makes a second request breaks too: after a request that is complete (it ends
 on a direction, a number or an object: "go slightly upwards *keeping* a smaller distance from the
 chair") and, after a comma, where it asks about another kind of thing than the piece before ("visit
-the sink, *slowing* down there" asks a pace after a place; "arc over the middle, *bulging* upwards"
-only says more about the place).
+the sink, *slowing* down there" asks a pace after a place), names another object or turns a move
+another way ("move the start 0.2 right, *lifting* the path slightly"); "arc over the middle,
+*bulging* upwards" only says more about the place.
 
 "while" breaks before a piece that is more than a place: "head left *while easing to a halt at the
 end*" asks two things, but "hurry *while passing the printer*" asks one (the piece after "while"
-only says where). "as" never breaks. A clause may need two steps
-("go up by 0.1 at a constant speed of 0.2"), so a clause is not a step.
+only says where). "as" never breaks. A clause may need two steps ("go up by 0.1 at a constant
+speed of 0.2"), so a clause is not a step.
 """
 
 from __future__ import annotations

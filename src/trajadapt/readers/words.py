@@ -1,8 +1,9 @@
-"""How the user's words are read without a model: clauses, speed words, numbers, object names.
+"""How the user's words are read without a model: speed words, directions, numbers, object names.
 
 Every reader of the answer (``trajadapt.readers``), the clearance's exemptions
 (``checks.constraints``) and the effect's flags (``checks.effect``) read instructions with these
-helpers, so that one clause splitter, one number reading and one vocabulary serve them all.
+helpers, so that one number reading and one vocabulary serve them all; the clauses they read come
+from the one splitter, ``readers.clause_split``.
 """
 
 from __future__ import annotations

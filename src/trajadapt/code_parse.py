@@ -95,8 +95,21 @@ def detected_name(node: ast.expr) -> str | None:
     return None
 
 
-def plain_line(line: str, callables: Collection[str]) -> bool:
-    """A blank line, ``name = name`` or one whose call is one of ``callables``: code a reader can follow."""
+def skill_program(lines: list[str], skills: Collection[str]) -> tuple[int, str] | None:
+    """Where a program of skill calls alone reads the trajectory: that line's index and its variable.
+
+    None when a line is neither blank, ``name = name``, ``get_trajectory``, ``detect_objects`` nor a
+    call of one of ``skills`` (a reader cannot follow what it moves), when no line calls a skill (the
+    program keeps the path), or when nothing reads the trajectory.
+    """
+    followed = (*skills, "get_trajectory", "detect_objects")
+    if not all(_plain(line, followed) for line in lines) or not any(called_name(x) in skills for x in lines):
+        return None
+    start = next((i for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
+    return None if start is None else (start, lines[start].split("=")[0].strip())
+
+
+def _plain(line: str, callables: Collection[str]) -> bool:
     if not line.strip() or called_name(line) in callables:
         return True
     return bool(re.fullmatch(r"\s*[A-Za-z_]\w*\s*=\s*[A-Za-z_]\w*\s*", line))

@@ -21,7 +21,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, called_name, plain_line
+from trajadapt.code_parse import assigned_call, called_name, skill_program
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import PART_OR_END, intensity_word, said_directions
@@ -42,15 +42,10 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     lines = code.splitlines()
     moved = {direction for line in lines for direction in _directions(line)}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
-    start = next((i + 1 for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
-    variable = lines[start - 1].split("=")[0].strip() if start else "t"
-    steps = [line for line in lines if called_name(line) in SKILL_NAMES]
-    if (
-        start is None
-        or not steps
-        or not all(plain_line(line, (*SKILL_NAMES, "get_trajectory", "detect_objects")) for line in lines)
-    ):
+    program = skill_program(lines, SKILL_NAMES)
+    if program is None:
         return code, []  # no step at all is an answer that keeps the path, not a dropped clause
+    start, variable = program[0] + 1, program[1]
     added: list[str] = []
     notes: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):

@@ -21,13 +21,11 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import SPEED_STEPS, called_name, plain_line
+from trajadapt.code_parse import SPEED_STEPS, called_name, skill_program
 from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.words import PART_OR_END, intensity_word
 from trajadapt.skills import SKILL_NAMES
 
-FOLLOWED = (*SKILL_NAMES, "get_trajectory", "detect_objects")
-"""The calls whose lines the reader can follow."""
 STEP_OF = {"closer": "move_closer", "away": "move_away"}
 """The step that answers each relation this reader adds."""
 
@@ -35,11 +33,10 @@ STEP_OF = {"closer": "move_closer", "away": "move_away"}
 def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with a closer/further step for each object a clause asks one of and no step moves by."""
     lines = code.splitlines()
-    start = next((i for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
-    steps = [i for i, line in enumerate(lines) if called_name(line) in SKILL_NAMES]
-    if start is None or not steps or not all(plain_line(line, FOLLOWED) for line in lines):
+    program = skill_program(lines, SKILL_NAMES)
+    if program is None:
         return code, []
-    variable = lines[start].split("=")[0].strip()
+    variable = program[1]
     added: list[str] = []
     notes: list[str] = []
     for ask in object_asks(" ".join(asked), list(names)).values():
@@ -57,7 +54,7 @@ def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -
         )
     if not added:
         return code, []
-    last = max(steps)
+    last = max(i for i, line in enumerate(lines) if called_name(line) in SKILL_NAMES)
     return "\n".join([*lines[: last + 1], *added, *lines[last + 1 :]]), notes
 
 

@@ -142,3 +142,12 @@ def step_on_object(line: str, name: str) -> bool:
 def on_object(call: ast.Call | None, name: str) -> bool:
     """Whether the call's point argument names object ``name``."""
     return any(found.casefold() == name.casefold() for found in objects_of(call))
+
+
+def same_program(first: str, second: str) -> bool:
+    """Whether two programs are equal up to blank lines and spaces at line ends."""
+
+    def lines(code: str) -> list[str]:
+        return [line.rstrip() for line in code.strip().splitlines() if line.strip()]
+
+    return lines(first) == lines(second)

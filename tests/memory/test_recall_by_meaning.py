@@ -77,3 +77,29 @@ def test_without_a_meaning_the_words_decide(bank: MemoryBank) -> None:
     _remember(bank, "Make the path zigzag", "zigzag(t, 0.1)")
     assert _first(bank, "Make the trajectory zigzag") == "Make the path zigzag"
     assert all(e.remembered == "" for e in choose_examples("Draw a spiral", 3, NAMES, bank.examples())[:1])
+
+
+def test_the_users_latest_answer_to_a_request_supersedes_the_ones_before_it(bank: MemoryBank) -> None:
+    _remember(bank, "go much faster close to the bench", "scale_speed(t, 1.6, near=detect_objects('bench'))")
+    _remember(bank, "walk a lot quicker by the husky", "scale_speed(t, 1.6, near=detect_objects('husky'))")
+    _remember(bank, "move a lot faster beside the husky", "scale_speed(t, 2.5, near=detect_objects('husky'))")
+    chosen = choose_examples("speed up a lot when passing the husky", 3, NAMES, bank.examples())
+    assert "2.5" in chosen[0].code
+    assert not any("1.6" in example.code for example in chosen)
+
+
+def test_near_answers_that_agree_are_all_kept(bank: MemoryBank) -> None:
+    _remember(bank, "Lower the speed everywhere", "scale_speed(t, 0.65)")
+    _remember(bank, "Reduce your speed everywhere", "scale_speed(t, 0.65)")
+    chosen = choose_examples("Cut the pace along the whole route", 3, NAMES, bank.examples())
+    assert {e.instruction for e in chosen[:2]} == {
+        "Lower the speed everywhere",
+        "Reduce your speed everywhere",
+    }
+
+
+def test_the_answer_to_the_very_same_words_comes_before_a_later_one_to_other_words(bank: MemoryBank) -> None:
+    _remember(bank, "stay much nearer to the husky", "move_closer(t, detect_objects('husky'), 'a lot')")
+    _remember(bank, "get a lot closer to the husky", "move_closer(t, detect_objects('husky'), 0.3)")
+    assert _first(bank, "Stay much nearer to the husky") == "stay much nearer to the husky"
+    assert _first(bank, "walk a lot nearer to the husky") == "get a lot closer to the husky"

@@ -29,6 +29,7 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Literal
 
+from trajadapt.code_parse import same_program
 from trajadapt.llm.example_bank import Example, ExampleBank, default_bank, terms
 from trajadapt.memory.bank import RememberedExample
 from trajadapt.memory.meaning import asked_meanings
@@ -55,26 +56,31 @@ def choose_examples(
         return []
     own = [example.as_example(instruction, names) for example in remembered]
     bank = shipped_bank(by) if not own else ExampleBank([*own, *default_bank().examples], _meanings(by))
-    near = _near_matches(instruction, own, names)
-    whole = bank.ranked(instruction, names)
+    matches = _near_matches(instruction, own, names)
+    near = _latest_answers(instruction, matches, own)
+    superseded = matches - near  # own come first in ``bank``, so their indices are the same there
+    whole = [index for index in bank.ranked(instruction, names) if index not in superseded]
     chosen = sorted(near, key=whole.index)
     if by == "clauses":
-        chosen += _best_per_clause(bank, instruction, names, chosen)
+        chosen += _best_per_clause(bank, instruction, names, chosen, superseded)
     chosen += [index for index in whole if index not in chosen]
     picked = chosen[:k]
     return [bank.examples[i] for i in sorted(picked, key=lambda i: (i not in near, whole.index(i)))]
 
 
 def _best_per_clause(
-    bank: ExampleBank, instruction: str, names: Sequence[str], taken: list[int]
+    bank: ExampleBank, instruction: str, names: Sequence[str], taken: list[int], superseded: set[int]
 ) -> list[int]:
-    """The best example of each clause of a compound instruction that ``taken`` does not hold yet."""
+    """The best example of each clause of a compound instruction that ``taken`` does not hold yet.
+
+    A ``superseded`` example is never the best of a clause.
+    """
     parts = split_clauses(instruction, names)
     if len(parts) < 2:
         return []
     best: list[int] = []
     for part in parts:
-        first = bank.ranked(part, names)[0]
+        first = next(i for i in bank.ranked(part, names) if i not in superseded)
         if first not in taken and first not in best:
             best.append(first)
     return best
@@ -108,6 +114,25 @@ def _near_matches(instruction: str, own: Sequence[Example], names: Sequence[str]
     if asked[0]:
         return {i for i, e in enumerate(own) if _request(e.instruction, [*names, *e.object_names]) == asked}
     return {i for i, e in enumerate(own) if _shares_words(instruction, e, names)}
+
+
+def _latest_answers(instruction: str, near: set[int], own: Sequence[Example]) -> set[int]:
+    """Of the near matches, the latest and those that answer as it does (``own`` is oldest first).
+
+    Every near match asks what the instruction asks, so where their programs differ the user's
+    latest answer is their word on this request now: an answer corrected to ``scale_speed(t, 2.5,
+    ...)`` supersedes the 1.6x answers approved before it for the same "a lot faster". The latest
+    answer to these very words comes before the latest to other words.
+    """
+    same_words = {i for i in near if _words(own[i].instruction) == _words(instruction)}
+    latest = max(same_words or near, default=None)
+    if latest is None:
+        return set()
+    return {i for i in near if same_program(own[i].code, own[latest].code)}
+
+
+def _words(text: str) -> str:
+    return " ".join(text.lower().split())
 
 
 def _shares_words(instruction: str, example: Example, names: Sequence[str]) -> bool:

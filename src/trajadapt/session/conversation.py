@@ -12,6 +12,7 @@ from dataclasses import replace
 
 from trajadapt.backends.base import Backend, ChatMessage, ChatRequest, Completion
 from trajadapt.clauses.grammar import MAX_CLAUSES, clause_answer_grammar
+from trajadapt.code_parse import same_program
 from trajadapt.errors import AnswerParseError, SessionStateError
 from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
@@ -29,15 +30,6 @@ from trajadapt.session.records import Checkpoint, Explanation, ProgressCallback,
 from trajadapt.session.settings import SessionSettings
 
 Mark = tuple[int, int, int, list[ReaderNote]]
-
-
-def _same_program(first: str, second: str) -> bool:
-    """Equal programs up to blank lines and spaces at line ends."""
-
-    def lines(code: str) -> list[str]:
-        return [line.rstrip() for line in code.strip().splitlines() if line.strip()]
-
-    return lines(first) == lines(second)
 
 
 class Conversation:
@@ -202,7 +194,7 @@ class Conversation:
             (
                 e
                 for e in self.recalled_examples
-                if _same_program(e.code, plan.code) and asks_all_of(e, self.case.instruction)
+                if same_program(e.code, plan.code) and asks_all_of(e, self.case.instruction)
             ),
             None,
         )

@@ -10,7 +10,7 @@ from trajadapt.checks.effect import FASTER as EFFECT_FASTER
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.model.geometry import PAPER_AXES
 from trajadapt.readers.object_words import object_asks
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions, stated_numbers
 
 
 @pytest.mark.parametrize(
@@ -23,6 +23,8 @@ from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_direction
         ("descend towards the floor", "down"),
         ("let the path sink a bit", "down"),
         ("dip under the shelf", "down"),
+        ("dropping the route by 0.3", "down"),
+        ("with the curve lowered near the end", "down"),
     ],
 )
 def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> None:
@@ -45,6 +47,10 @@ def test_a_word_before_a_speed_names_no_direction(words: str) -> None:
         ("lessen your speed", False),
         ("cut the pace in the first half", False),
         ("brake before the goal", False),
+        ("ease up a bit around the crate", False),
+        ("taking it easy around the crate", False),
+        ("crawling by the crate", False),
+        ("drop your speed at the end", False),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:
@@ -60,6 +66,9 @@ def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster
         ("allow more clearance around the vase", "away"),
         ("pass the vase with a tighter gap", "closer"),
         ("hug the vase", "closer"),
+        ("keep well clear of the vase", "away"),
+        ("allow a bigger margin around the vase", "away"),
+        ("pass the vase by a narrower margin", "closer"),
     ],
 )
 def test_closeness_is_read_alike_everywhere(words: str, relation: str) -> None:
@@ -68,6 +77,12 @@ def test_closeness_is_read_alike_everywhere(words: str, relation: str) -> None:
     assert pattern.search(words) and not other.search(words)
     assert object_asks(words, ["vase"])["vase"].relation == relation
     assert f"@{relation}" in asked_meanings(words)
+
+
+@pytest.mark.parametrize("words", ["halving the pace", "the speed halved", "halve your velocity"])
+def test_halving_states_a_half(words: str) -> None:
+    assert stated_numbers(words) == [0.5]
+    assert said_directions(words) == set()
 
 
 def test_the_effect_flags_use_the_same_words() -> None:

@@ -29,7 +29,8 @@ DIRECTION_VERBS = {
     "lifts": "up", "lifting": "up", "raise": "up", "raises": "up", "raising": "up", "elevate": "up",
     "elevates": "up", "elevating": "up", "descend": "down", "descends": "down", "descending": "down",
     "descent": "down", "sink": "down", "sinks": "down", "sinking": "down", "dip": "down", "dips": "down",
-    "dipping": "down",
+    "dipping": "down", "drop": "down", "drops": "down", "dropped": "down", "dropping": "down",
+    "lowers": "down", "lowered": "down", "lowering": "down",
 }  # fmt: skip
 """Verbs that name a direction of motion ("climb a little" is up). Words of the user's only: a skill's
 direction argument takes ``DIRECTION_SYNONYMS``, so ``shift(t, 'climb')`` stays an error."""

@@ -71,24 +71,28 @@ FASTER = re.compile(
     re.I,
 )
 SLOWER = re.compile(
-    r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*"
+    r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*"
+    r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{SPEED_NOUN})",
     re.I,
 )
-"""What asks for more speed, and for less: speed words, and a verb or adjective of more or less before
-a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
+"""What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl" are
+slower), and a verb or adjective of more or less before a speed ("reduce your speed", "raise the
+pace", "at a lower speed")."""
 
 CLOSER = re.compile(
     r"\b(?:closer|nearer|approach\w*|toward[s]?|hug\w*"
-    r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance))\b",
+    r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance|margin))\b",
     re.I,
 )
 AWAY = re.compile(
-    r"\b(?:away|further|farther"
-    r"|(?:greater|larger|bigger|more|increased?|wider|extra) (?:distance|berth|space|room|gap|clearance))\b",
+    r"\b(?:away|further|farther|clear\s+of"
+    r"|(?:greater|larger|bigger|more|increased?|wider|extra)"
+    r" (?:distance|berth|space|room|gap|clearance|margin))\b",
     re.I,
 )
-"""What asks to come closer to an object, and to keep further from it ("avoid" asks a clearance, which
+"""What asks to come closer to an object, and to keep further from it ("steer clear of", "a wider
+margin"; "avoid" asks a clearance, which
 the readers leave to ``avoid``; only the effect's flags count it as away)."""
 
 
@@ -158,7 +162,7 @@ def asks_pace(words: str) -> bool:
 NUMBER_WORDS = {
     "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
     "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,
-    "half": 0.5, "quarter": 0.25,
+    "half": 0.5, "halve": 0.5, "halved": 0.5, "halving": 0.5, "quarter": 0.25,
 }  # fmt: skip
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
 INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)

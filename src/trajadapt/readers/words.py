@@ -92,8 +92,8 @@ AWAY = re.compile(
     re.I,
 )
 """What asks to come closer to an object, and to keep further from it ("steer clear of", "a wider
-margin"; "avoid" asks a clearance, which
-the readers leave to ``avoid``; only the effect's flags count it as away)."""
+margin"; "avoid" asks a clearance, which the readers leave to ``avoid``; only the effect's flags
+count it as away)."""
 
 
 def whole_words(text: str) -> str:

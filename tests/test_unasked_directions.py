@@ -33,8 +33,8 @@ def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(
     [
         ("t = shift(t, 'down')", "go down and further from the lamp"),  # the words say down
         ("t = shift(t, 'up')\nt = shift(t, 'left')", "further from the lamp"),  # two guesses: which?
-        ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "further from the lamp"),  # done
-        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "go faster"),  # the speed is changed already
+        ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "go up, further from the lamp"),
+        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4, part='end')", "faster at the end"),  # a part is named
         ("t = shift(t, 'up')", "make the path smoother"),  # nothing else asked
     ],
 )
@@ -67,3 +67,18 @@ def test_paces_near_two_objects_leave_the_shift_alone() -> None:
         code,
         [],
     )
+
+
+@pytest.mark.parametrize(
+    ("steps", "words"),
+    [
+        ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "further from the lamp"),
+        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "go faster"),
+        ("t = scale_speed(t, 0.45)\nt = shift(t, 'down', 'a bit')\nt = move_away(t, detect_objects('sofa'))",
+         "reduce the speed a lot and keep more room from the sofa"),
+    ],
+)  # fmt: skip
+def test_an_unsaid_shift_beside_steps_that_make_all_the_words_ask_is_left_out(steps: str, words: str) -> None:
+    code, notes = replace_unasked_shifts(CODE.format(step=steps), [words], NAMES)
+    assert "shift" not in code and code.count("\n") == steps.count("\n") + 1
+    assert "names no direction" in notes[0]

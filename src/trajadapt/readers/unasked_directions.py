@@ -14,7 +14,11 @@ becomes that step:
   speed -> ``scale_speed`` with the calibrated factor, in the shift's part (``part=``) or the part
   the words name ("in the middle", "at the start", "towards the end"), else everywhere.
 
-Two such shifts, or a shift the words give a direction for, are left alone. A review note says so.
+When the words ask nothing that no step makes, name no direction and no part or end of the path,
+and another step changes the path or its pace, the one such shift serves no clause and is left out
+("halve the speed and stay further from the bird" answered with a shift down beside the two asked
+steps). Two such shifts, or a shift the words give a direction for, are left alone. A review note
+says what changed.
 Measured on stored answers in docs/benchmarks.md.
 """
 
@@ -38,6 +42,7 @@ from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
     FASTER,
+    PART_OR_END,
     SLOWER,
     intensity_word,
     longest_names,
@@ -64,7 +69,7 @@ def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]
     index = unsaid[0]
     replaced, reason = _asked_instead(lines, index, words, names)
     if replaced is None:
-        return code, []
+        return _left_out_beside_others(lines, index, words)
     before = lines[index]
     lines[index] = in_place_of(before, replaced)
     return "\n".join(lines), [
@@ -96,6 +101,20 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     where = f", part={part!r}" if part else ""
     step = f"t = scale_speed(t, {speed_factor(words, faster=faster)}{where})"
     return step, f"it asks for a {'faster' if faster else 'slower'} pace"
+
+
+def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[str, list[str]]:
+    """The code without the shift at ``index`` when the other steps make all the words ask.
+
+    That is when the words name no direction and no part or end of the path, and another step
+    changes the path or its pace: the shift serves no clause (a guess copied from an example).
+    """
+    steps = [i for i, line in enumerate(lines) if called_name(line) not in (None, "get_trajectory")]
+    if said_directions(words) or PART_OR_END.search(words) or steps == [index]:
+        return "\n".join(lines), []
+    before = lines.pop(index).strip()
+    note = f"left out `{before}`: the instruction names no direction, and the other steps make what it asks"
+    return "\n".join(lines), [note]
 
 
 def _shift_direction(line: str) -> str | None:

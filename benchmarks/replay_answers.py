@@ -2,7 +2,9 @@
 
 Measures changes that act after the answer (leaving out unasked steps, replacing made-up amounts,
 skill constants, projection, the judges) on exactly the answers a run got: each stored result's
-plan and code are given back as the answer to that case's request, with no repair round.
+``answer`` (the model's own text, kept since session 15) is given back as the answer to that case's
+request, with no repair round. Older results have only the plan and code after the readers, so
+their replay starts from what the readers of that run made (a lower bound for a new reader).
 
 Run: .venv/bin/python benchmarks/replay_answers.py STORED_OUT CASES... --out NEW_OUT [--memory BANK]
 Then compare: .venv/bin/python benchmarks/compare_runs.py STORED_OUT NEW_OUT
@@ -13,6 +15,7 @@ from __future__ import annotations
 import argparse
 import json
 from pathlib import Path
+from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
@@ -48,6 +51,12 @@ class StoredAnswers(Backend):
         return Completion(text=max(found)[1] if found else "no stored answer", model=self.model)
 
 
+def _answer_after_readers(record: dict[str, Any]) -> str:
+    """The stored plan and code as an answer: what a result that does not keep the model's own gives."""
+    plan = " ".join(f"{i}) {step}" for i, step in enumerate(record.get("high_level_plan") or [], start=1))
+    return json.dumps({"high_level_plan": plan or "1) (no plan)", "python_code": record.get("code") or ""})
+
+
 def main() -> None:
     """Replay every stored answer and write the new results, summary and report."""
     parser = argparse.ArgumentParser(
@@ -74,10 +83,7 @@ def main() -> None:
             continue
         record = json.loads(path.read_text())
         axes = (record.get("settings") or {}).get("axes", axes)
-        plan = " ".join(f"{i}) {step}" for i, step in enumerate(record.get("high_level_plan") or [], start=1))
-        answer = json.dumps(
-            {"high_level_plan": plan or "1) (no plan)", "python_code": record.get("code") or ""}
-        )
+        answer = record.get("answer") or _answer_after_readers(record)
         loaded = load_case(case.path)
         answers.append(((describe_environment(loaded), "INSTRUCTION: " + loaded.instruction), answer))
         replayed.append(case)

@@ -116,6 +116,8 @@ class AdaptationResult:
     """Ids of the user's remembered examples that were in the prompt."""
     remembered_as: str = ""
     """The id this approved answer is remembered under ('' when memory is off or it failed)."""
+    answer: str = ""
+    """The model's own answer behind ``plan``, before the readers changed it ('' when unknown)."""
 
     @property
     def ok(self) -> bool:
@@ -160,6 +162,7 @@ class AdaptationResult:
                 else None
             ),
             "memory": {"recalled": list(self.recalled), "remembered_as": self.remembered_as or None},
+            "answer": self.answer or None,
         }
 
 

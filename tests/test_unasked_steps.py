@@ -74,7 +74,9 @@ def test_the_session_leaves_the_step_out_and_says_so(simple_case: Case, sandbox:
         result = session.approve()
         assert result.trajectory is not None and len(result.trajectory) == expected_length
         assert any(n.code == "unasked-steps" for n in result.notes) is leave_out
-        assert result.answer == answer and result.to_dict()["answer"] == answer  # the model's own, for replays
+        assert (
+            result.answer == answer and result.to_dict()["answer"] == answer
+        )  # the model's own, for replays
 
 
 @pytest.mark.parametrize(

@@ -18,6 +18,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
+from trajadapt.model.scene import without_names
+
 WORD = re.compile(r"[a-z]+|\d+(?:\.\d+)?")
 OBJECT_NAME = re.compile(r"detect_objects\('([^']*)'\)")
 STOP_WORDS = frozenset(
@@ -88,11 +90,7 @@ def terms(text: str, leave_out: Iterable[str] = ()) -> list[str]:
     Numbers become '<number>' and the given names are removed first. The pairs ('slow+close') tell
     "slower near" from "closer" and "slower".
     """
-    lowered = text.lower()
-    for name in sorted(leave_out, key=len, reverse=True):
-        if name:
-            lowered = lowered.replace(name.lower(), " ")
-    words = WORD.findall(lowered)
+    words = WORD.findall(without_names(text, leave_out))
     stems = ["<number>" if word[0].isdigit() else stem(word) for word in words if word not in STOP_WORDS]
     return stems + [f"{first}+{second}" for first, second in zip(stems, stems[1:], strict=False)]
 

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -57,6 +58,18 @@ class Scene:
 def name_key(name: str) -> str:
     """How object names are compared: case-insensitive, surrounding and repeated spaces ignored."""
     return " ".join(str(name).split()).casefold()
+
+
+def without_names(text: str, names: Iterable[str]) -> str:
+    """``text`` in lower case with each name, as whole words, made a space (longest names first).
+
+    >>> without_names("Move nearer to the Ear", ["ear"])
+    'move nearer to the  '
+    """
+    lowered = text.lower()
+    for name in sorted((name for name in names if name.strip()), key=len, reverse=True):
+        lowered = re.sub(rf"(?<![a-z0-9]){re.escape(name.lower())}(?![a-z0-9])", " ", lowered)
+    return lowered
 
 
 def parse_objects(raw: Any, where: str) -> tuple[SceneObject, ...]:

@@ -11,6 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
+from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
     AWAY,
@@ -54,7 +55,7 @@ def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
 
 
 def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
-    side = _side(clause.replace(name, " "))
+    side = _side(without_names(clause, [name]))
     if side:
         return ObjectAsk(name, "side", clause, side=side)
     if asks_pace(clause):

@@ -19,6 +19,8 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from trajadapt.model.scene import without_names
+
 
 @dataclass(frozen=True)
 class Topic:
@@ -187,9 +189,7 @@ def leave_out_unasked(
     names (the object "ear" leaves "nearer" as it is). Only lines of the form
     ``t = skill(t, ...)`` (the same variable in and out) are left out.
     """
-    words = " ".join(asked).lower()
-    for name in sorted(object_names, key=len, reverse=True):
-        words = re.sub(rf"\b{re.escape(name.lower())}\b", " ", words) if name.strip() else words
+    words = without_names(" ".join(asked), object_names)
     kept, notes = [], []
     for line in code.splitlines():
         match = STATEMENT.match(line)

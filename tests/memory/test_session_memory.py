@@ -165,3 +165,25 @@ def test_a_remembered_program_is_kept_as_approved_only_for_a_request_it_answers_
 
     assert "move_closer" in drafted("stay a little nearer to the Red Mug")  # the same request: kept
     assert "move_away" in drafted("leave a wider gap to the Red Mug")  # the opposite: read again
+
+
+def test_the_very_same_words_get_the_remembered_answer_without_asking_the_model(
+    simple_case: Case, sandbox: Sandbox, tmp_path: Path
+) -> None:
+    bank = MemoryBank(tmp_path / "memory.jsonl")
+    corrected = session(simple_case.with_instruction("stay clear of the Red Mug"), sandbox, bank,
+                        answer("1) Away.", AWAY))  # fmt: skip
+    corrected.draft()
+    kept = corrected.approve().remembered_as
+    backend = ScriptedBackend(answers=[])  # the model has nothing to say
+    settings = SessionSettings(repair_attempts=0, read_against_words=False)
+    again = AdaptationSession(simple_case.with_instruction("Stay clear of  the Red Mug"), backend, sandbox,
+                              settings, memory=bank)  # fmt: skip
+    plan = again.draft()
+    assert plan.code.strip() == AWAY and backend.requests == []
+    assert again.turns[0].completion is not None and again.turns[0].completion.model == f"memory:{kept}"
+    other_words = session(simple_case.with_instruction("keep away from the Red Mug"), sandbox, bank,
+                          answer("1) Closer.", CLOSER))  # fmt: skip
+    assert (
+        other_words.draft().code.strip() == CLOSER
+    )  # other words: the model answers, the example only shown

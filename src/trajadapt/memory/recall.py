@@ -145,6 +145,15 @@ def _shares_words(instruction: str, example: Example, names: Sequence[str]) -> b
     return min(shared / len(words), shared / len(theirs)) >= NEAR
 
 
+def answer_to_same_words(instruction: str, chosen: Sequence[Example]) -> Example | None:
+    """The user's remembered answer to these very words among the ``chosen`` examples, if any.
+
+    The user approved that program for exactly this request (names aside), so it is the answer again:
+    asking the model would only risk the misreading they corrected.
+    """
+    return next((e for e in chosen if e.remembered and _words(e.instruction) == _words(instruction)), None)
+
+
 def asks_all_of(example: Example, instruction: str) -> bool:
     """Whether the example's request asks everything ``instruction`` asks (its meaning tokens).
 

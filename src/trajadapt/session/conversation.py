@@ -7,6 +7,7 @@ checkpoint keeps where the conversation stood, the words said by then and the re
 
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import replace
 
@@ -18,7 +19,7 @@ from trajadapt.files.store import Store
 from trajadapt.llm.answer import Plan, parse_answer
 from trajadapt.llm.answer_grammar import answer_grammar
 from trajadapt.llm.plan_stream import PlanStream
-from trajadapt.memory import MemoryBank, asks_all_of
+from trajadapt.memory import MemoryBank, answer_to_same_words, asks_all_of
 from trajadapt.model.case import Case
 from trajadapt.prompts import chosen_examples, first_messages, render
 from trajadapt.readers import ReaderNote, read_against_words
@@ -206,7 +207,16 @@ class Conversation:
         return replace(plan, code=code) if self._left_out else plan
 
     def _complete(self, first: bool = False) -> Completion:
-        """Send the conversation so far and count the time and tokens of the answer."""
+        """Send the conversation so far and count the time and tokens of the answer.
+
+        The first answer to words the user has approved an answer to before is that answer, from
+        memory, without asking the model (``memory.answer_to_same_words``).
+        """
+        same = answer_to_same_words(self.case.instruction, self.recalled_examples) if first else None
+        if same is not None:
+            self.on_progress(f"answered from remembered example {same.remembered} (the same words)")
+            text = json.dumps({"high_level_plan": same.high_level_plan, "python_code": same.code})
+            return Completion(text=text, model=f"memory:{same.remembered}")
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
         steps: list[str] = []
 

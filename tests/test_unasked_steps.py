@@ -117,3 +117,11 @@ def test_a_name_inside_a_word_leaves_the_word_alone(name: str, words: str) -> No
     step = f"t = move_closer(t, detect_objects('{name}'))"
     code = f"t = get_trajectory()\n{step}\nt = scale_speed(t, 1.4)\nmodified_trajectory = t"
     assert leave_out_unasked(code, [words], [name]) == (code, [])
+
+
+@pytest.mark.parametrize("words", ["ease up a little around the box", "take it easy when the box is close"])
+def test_a_pace_in_the_shared_vocabulary_asks_for_a_speed_change(words: str) -> None:
+    code = (
+        "t = get_trajectory()\nt = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
+    )
+    assert leave_out_unasked(code, [words], ["box"]) == (code, [])

@@ -16,10 +16,11 @@ away from an object is left out unless the words also ask for a change of distan
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from trajadapt.model.scene import without_names
+from trajadapt.readers.words import asks_pace
 
 
 @dataclass(frozen=True)
@@ -30,6 +31,7 @@ class Topic:
     skills: tuple[str, ...]
     stems: tuple[str, ...]
     only_with: str | None = None  # guarded only when this other topic is asked for
+    also: Callable[[str], bool] | None = None  # the shared vocabulary's reading of the same topic
 
 
 TOPICS = (
@@ -60,6 +62,7 @@ TOPICS = (
             "gentl",
             "careful",
         ),
+        also=asks_pace,  # "ease off", "take it easy", "reduce your speed": the readers' one vocabulary
     ),  # fmt: skip
     Topic(
         "going on past the goal",
@@ -165,6 +168,8 @@ STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\
 def asks_for(topic: Topic, words: str) -> bool:
     """Whether ``words`` contain a stem of ``topic`` at the start of a word."""
     lowered = words.lower()
+    if topic.also is not None and topic.also(words):
+        return True
     return any(re.search(r"\b" + re.escape(stem), lowered) for stem in topic.stems)
 
 

@@ -177,7 +177,7 @@ def test_the_very_same_words_get_the_remembered_answer_without_asking_the_model(
     kept = corrected.approve().remembered_as
     backend = ScriptedBackend(answers=[])  # the model has nothing to say
     settings = SessionSettings(repair_attempts=0, read_against_words=False)
-    again = AdaptationSession(simple_case.with_instruction("Stay clear of  the Red Mug"), backend, sandbox,
+    again = AdaptationSession(simple_case.with_instruction("Stay clear of  the Red Mug."), backend, sandbox,
                               settings, memory=bank)  # fmt: skip
     plan = again.draft()
     assert plan.code.strip() == AWAY and backend.requests == []

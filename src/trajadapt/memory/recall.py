@@ -9,6 +9,9 @@ slightly upwards and walk closer to the husky" whatever the verbs, and "keep mor
 meets "keep less", nor "much closer" "slightly closer". Where the readers find no meaning in the
 instruction, near falls back to words: the stems both share are at least ``NEAR`` of each side's
 (the same words in another scene). Measured in docs/benchmarks.md, "Issue #28, session 12".
+Where near matches answer differently, the user's latest answer (to these very words first) speaks
+for them and the older ones are not shown (``_latest_answers``; "Issues #28 and #24, session 15"),
+and the very same words get that answer without asking the model (``answer_to_same_words``).
 
 How the rest are chosen is ``by``:
 
@@ -132,7 +135,8 @@ def _latest_answers(instruction: str, near: set[int], own: Sequence[Example]) ->
 
 
 def _words(text: str) -> str:
-    return " ".join(text.lower().split())
+    """The words as compared for "the same words": case, spacing and a closing full stop aside."""
+    return " ".join(text.lower().split()).rstrip(" .!")
 
 
 def _shares_words(instruction: str, example: Example, names: Sequence[str]) -> bool:

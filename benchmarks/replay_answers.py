@@ -20,6 +20,7 @@ from typing import Any
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
+from trajadapt.llm.answer import answer_json
 from trajadapt.model.case import load_case
 from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import describe_environment
@@ -54,7 +55,7 @@ class StoredAnswers(Backend):
 def _answer_after_readers(record: dict[str, Any]) -> str:
     """The stored plan and code as an answer: what a result that does not keep the model's own gives."""
     plan = " ".join(f"{i}) {step}" for i, step in enumerate(record.get("high_level_plan") or [], start=1))
-    return json.dumps({"high_level_plan": plan or "1) (no plan)", "python_code": record.get("code") or ""})
+    return answer_json(plan or "1) (no plan)", record.get("code") or "")
 
 
 def main() -> None:

@@ -30,6 +30,11 @@ class Plan:
         return "\n".join(f"{index}) {step}" for index, step in enumerate(self.steps, start=1))
 
 
+def answer_json(plan: str, code: str) -> str:
+    """A plan and its code as an answer in the form the prompt asks for (``parse_answer`` reads it)."""
+    return json.dumps({"high_level_plan": plan, "python_code": code})
+
+
 def parse_answer(text: str) -> Plan:
     """Read the plan and code out of an LLM answer.
 

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
+from trajadapt.llm.answer import answer_json
 from trajadapt.model.scene import without_names
 
 WORD = re.compile(r"[a-z]+|\d+(?:\.\d+)?")
@@ -44,8 +45,7 @@ class Example:
 
     def render(self) -> str:
         """As the prompt shows examples: the instruction, then the answer's JSON on one line."""
-        answer = json.dumps({"high_level_plan": self.high_level_plan, "python_code": self.code})
-        return f"Instruction: {self.instruction}\n{answer}"
+        return f"Instruction: {self.instruction}\n{answer_json(self.high_level_plan, self.code)}"
 
     @property
     def object_names(self) -> list[str]:

@@ -7,7 +7,6 @@ checkpoint keeps where the conversation stood, the words said by then and the re
 
 from __future__ import annotations
 
-import json
 import time
 from dataclasses import replace
 
@@ -16,7 +15,7 @@ from trajadapt.clauses.grammar import MAX_CLAUSES, clause_answer_grammar
 from trajadapt.code_parse import same_program
 from trajadapt.errors import AnswerParseError, SessionStateError
 from trajadapt.files.store import Store
-from trajadapt.llm.answer import Plan, parse_answer
+from trajadapt.llm.answer import Plan, answer_json, parse_answer
 from trajadapt.llm.answer_grammar import answer_grammar
 from trajadapt.llm.plan_stream import PlanStream
 from trajadapt.memory import MemoryBank, answer_to_same_words, asks_all_of
@@ -215,7 +214,7 @@ class Conversation:
         same = answer_to_same_words(self.case.instruction, self.recalled_examples) if first else None
         if same is not None:
             self.on_progress(f"answered from remembered example {same.remembered} (the same words)")
-            text = json.dumps({"high_level_plan": same.high_level_plan, "python_code": same.code})
+            text = answer_json(same.high_level_plan, same.code)
             return Completion(text=text, model=f"memory:{same.remembered}")
         self.on_progress(f"asking {self.backend.name} ({self.backend.model})")
         steps: list[str] = []

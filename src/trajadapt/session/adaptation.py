@@ -245,14 +245,9 @@ class AdaptationSession(Conversation):
             settings=self.settings.describe(),
             explanation=self._explanation_of(plan),
             recalled=self.recalled,
-            answer=self._answer_behind(plan),
+            answer=plan.raw_text if plan is not None else "",
             **self._effect(run),
         )
-
-    def _answer_behind(self, plan: Plan | None) -> str:
-        """The text the model answered with for ``plan``, before the readers ('' for none)."""
-        turn = next((turn for turn in reversed(self.turns) if plan is not None and turn.plan is plan), None)
-        return turn.completion.text if turn is not None and turn.completion is not None else ""
 
     def _explanation_of(self, plan: Plan | None) -> Explanation | None:
         """The skills' explanation, or the model's if the user asked for it; no LLM call here."""

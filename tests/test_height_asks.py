@@ -18,6 +18,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("do not exceed 3 and stay above 0.5", [("stay_below", 3.0), ("stay_above", 0.5)]),
         ("stay at least 0.2 over the floor", [("stay_above", 0.2)]),
         ("keep under 1.2", [("stay_below", 1.2)]),
+        ("hold an elevation of 0.6", [("set_height", 0.6)]),  # a level with no "at"
+        ("raise the height 0.2", []),  # no "at", no "of": not read as a level
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:
@@ -40,5 +42,41 @@ def test_a_height_step_with_the_asked_number_and_another_relation_is_replaced() 
     ],
 )
 def test_right_relations_other_numbers_and_two_heights_stay(step: str, words: str) -> None:
+    code = CODE.format(step=step)
+    assert relate_heights(code, [words]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "shift"),
+    [  # wordings of a change in none of the sets
+        ("sink the route by 0.15", "t = set_height(t, 0.15)", "t = shift(t, 'down', 0.15)"),
+        ("elevate everything 0.3 and slow down", "t = stay_above(t, 0.3)", "t = shift(t, 'up', 0.3)"),
+        (
+            "go 0.05 higher near the cup",
+            "t = set_height(t, 0.05, keep_goal=True)",
+            "t = shift(t, 'up', 0.05)",
+        ),
+        ("bring it down 0.2 then speed up", "t = stay_below(t, 0.2)", "t = shift(t, 'down', 0.2)"),
+    ],
+)
+def test_a_height_step_holding_the_amount_of_a_move_up_or_down_becomes_that_shift(
+    words: str, step: str, shift: str
+) -> None:
+    code, notes = relate_heights(CODE.format(step=step), [words])
+    assert shift in code.splitlines()
+    assert "moves the path" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        ("t = set_height(t, 0.1)", "hold an altitude of 0.1 above the ground"),  # a level
+        ("t = set_height(t, 0.1)", "stay 0.1 up from the floor"),  # a level over the floor
+        ("t = set_height(t, 0.2)", "rise by 0.3"),  # another number
+        ("t = set_height(t, 0.2)", "move 0.2 to the left"),  # not up or down
+        ("t = set_height(t, 0.2)\nt = stay_below(t, 0.2)", "rise by 0.2"),  # two height steps
+    ],
+)
+def test_levels_other_numbers_and_other_directions_keep_the_height_step(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert relate_heights(code, [words]) == (code, [])

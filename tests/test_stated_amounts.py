@@ -21,6 +21,9 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         # a number beside its direction, without "by" (words.directed_numbers)
         ("drift 0.3 towards the right, then descend 0.05", {"right": 0.3, "down": 0.05}),
         ("carry on 1.2 further back", {"back": 1.2}),
+        ("raise it 0.3", {"up": 0.3}),  # the thing moved between the verb and its amount
+        ("lower the entire route 0.05", {"down": 0.05}),
+        ("raise it 2 times", {}),  # a count
         ("shift the first 4 waypoints up", {}),  # a count, not an amount
         ("go left or right by 0.2", {}),  # two directions in one clause
         ("go left by 0.2 or by 0.3", {}),  # two numbers

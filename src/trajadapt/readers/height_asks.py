@@ -8,6 +8,12 @@ at 1.5" -> ``set_height``; "below", "under", "lower than", "at most" -> ``stay_b
 relation round ("never higher than 3", "do not exceed 3" -> ``stay_below``). When the words give
 exactly one such height and the code has exactly one height step with that number and another
 skill, the step's skill is replaced. A review note says so.
+
+A number the words give as a change is no height at all: "descend by 0.1", "the path raised by
+0.2", "climb 0.3" move the path by that much (``stated_amounts.direction_amounts``), where the
+model wrote ``set_height(t, 0.1)`` or ``stay_below(t, 0.1)``. When the words give no height, no
+ground or floor, and one amount up or down, the one height step with that number becomes
+``shift`` by it.
 """
 
 from __future__ import annotations
@@ -17,18 +23,21 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.readers.stated_amounts import direction_amounts
 from trajadapt.readers.words import NUMBER_TEXT
 
 NUMBER = rf"({NUMBER_TEXT})"
 BELOW = r"below|under(?:neath)?|lower than|at most"
 ABOVE = r"above|over|higher than|more than|at least|exceed\w*"
-AT = r"at (?:a |an |the )?(?:height|altitude|elevation)(?: of)?|(?:fly|hover|stay|keep|cruise|move)\w* at"
+LEVEL = r"(?:height|altitude|elevation)"
+AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover|stay|keep|cruise|move)\w* at"
 RELATIONS = (
     ("stay_below", re.compile(rf"\b(?:{BELOW})\s+(?:a height of\s+)?{NUMBER}", re.I)),
     ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+(?:a height of\s+)?{NUMBER}", re.I)),
     ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
 )
 HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
+GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
 
 
 NEGATION = re.compile(r"\b(?:not|never|no|n't|don't|nowhere)\b(?:\s+\w+){0,2}\s*$", re.I)
@@ -52,7 +61,10 @@ def asked_heights(words: str) -> list[tuple[str, float]]:
 
 def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one height step of the asked number given the asked relation, and a note."""
-    heights = asked_heights(" ".join(asked))
+    words = " ".join(asked)
+    heights = asked_heights(words)
+    if not heights:
+        return _height_as_change(code, words)
     if len(heights) != 1:
         return code, []
     skill, height = heights[0]
@@ -71,16 +83,39 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     ]
 
 
+def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:
+    """``code`` with its one height step of the words' one up/down amount made a shift by it."""
+    vertical = {d: a for d, a in direction_amounts(words).items() if d in ("up", "down")}
+    if len(vertical) != 1 or GROUND.search(words):
+        return code, []
+    (direction, amount), lines = next(iter(vertical.items())), code.splitlines()
+    steps = [i for i, line in enumerate(lines) if _height_step(line, options=True) is not None]
+    if len(steps) != 1:
+        return code, []
+    value = _height_step(lines[steps[0]], options=True)[1]  # type: ignore[index]
+    if value is None or abs(value - amount) > 1e-9 * max(1.0, amount):
+        return code, []
+    line, changed = lines[steps[0]], f"t = shift(t, '{direction}', {amount:g})"
+    lines[steps[0]] = in_place_of(line, changed)
+    note = f"`{line.strip()}` -> `{changed}`: the instruction moves the path {direction} by {amount:g}"
+    return "\n".join(lines), [note]
+
+
 def _relation(skill: str) -> str:
     return {"set_height": "a height of", "stay_below": "a height below", "stay_above": "a height above"}[
         skill
     ]
 
 
-def _height_step(line: str) -> tuple[str, float | None] | None:
-    """The skill and numeric height of a one-argument height step (``stay_below(t, 0.1)``)."""
+def _height_step(line: str, options: bool = False) -> tuple[str, float | None] | None:
+    """The skill and numeric height of a one-argument height step (``stay_below(t, 0.1)``).
+
+    With ``options``, a step with keyword options too (``keep_goal=True``).
+    """
     found = assigned_call(line)
-    if found is None or found[2] not in HEIGHT_STEPS or len(found[1].args) != 2 or found[1].keywords:
+    if found is None or found[2] not in HEIGHT_STEPS or len(found[1].args) != 2:
+        return None
+    if found[1].keywords and not options:
         return None
     height = found[1].args[1]
     value = height.value if isinstance(height, ast.Constant) else None

@@ -57,6 +57,14 @@ def test_optional_arguments_and_defaults_are_spelled_out() -> None:
     ]
 
 
+def test_pass_over_spells_out_its_default_clearance_and_each_object() -> None:
+    lines = explain_code(
+        "t = get_trajectory()\nt = pass_over(t, [detect_objects('crate'), detect_objects('barrel')])\n"
+        "modified_trajectory = t"
+    )
+    assert lines == ["bends the path so that it passes 10% of the path's size above the crate and the barrel"]
+
+
 @pytest.mark.parametrize(
     "code",
     [

@@ -25,6 +25,7 @@ SKILLS: tuple[Callable[..., Any], ...] = (
     objects.move_away,
     objects.avoid,
     objects.pass_through,
+    objects.pass_over,
     objects.reach,
     objects.midpoint,
     objects.closest_waypoint,

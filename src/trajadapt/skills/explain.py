@@ -17,7 +17,7 @@ from trajadapt.code_parse import parse_code
 from trajadapt.model.geometry import PART_WORDS
 from trajadapt.skills import SKILLS
 from trajadapt.skills.core import AMOUNT_WORDS
-from trajadapt.skills.objects import CLOSER_FRACTIONS
+from trajadapt.skills.objects import CLOSER_FRACTIONS, OVER_CLEARANCE
 
 TEMPLATES: dict[str, str] = {
     "shift": "moves the path {amount} {direction}, keeping the start and blending in over the first 15%",
@@ -29,6 +29,7 @@ TEMPLATES: dict[str, str] = {
     "move_away": "pushes the part of the path nearest {point} {amount} away from it; start and goal stay",
     "avoid": "keeps every waypoint at least {clearance} from {points}",
     "pass_through": "bends the path so that it passes exactly through {point}",
+    "pass_over": "bends the path so that it passes {clearance} above {points}",
     "reach": "makes the path end at {point} instead of the old goal; the start stays",
     "scale_speed": "multiplies the speed by {factor} {where}",
     "set_speed": "sets the speed to {speed} {where}",
@@ -129,6 +130,8 @@ def _words(key: str, value: Any, skill: str) -> str:
         fraction = CLOSER_FRACTIONS.get(str(value).lower() if value is not None else "", value)
         label = f"'{value}' " if isinstance(value, str) else ""
         return f"{label}({float(fraction):.0%} of the way)" if fraction is not None else str(value)
+    if key == "clearance" and skill == "pass_over":
+        return f"{OVER_CLEARANCE:.0%} of the path's size" if value is None else _distance(value, key)
     if key in ("amount", "distance", "max_radius", "radius", "amplitude", "scale"):
         return _distance(value, key)
     if key == "part":

@@ -1,4 +1,4 @@
-"""Skills relative to objects and points: closer, further, keep a distance, pass through, reach.
+"""Skills relative to objects and points: closer, further, keep a distance, pass through or over, reach.
 
 Points are positions [x, y, z], e.g. ``detect_objects('box')``; None (an object not found) is
 refused with a message that says so.
@@ -249,6 +249,28 @@ def pass_through(
         window[after] = smoothstep((1.0 - s[after]) / max(1.0 - s[k], 1e-12))
     t[:, :3] += (weight * window)[:, None] * (target - t[k, :3])
     return t
+
+
+OVER_CLEARANCE = 0.1  # how far above an object pass_over goes by default (fraction of the path's size)
+
+
+def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceArg = None) -> Array:
+    """Bend the path so that it passes over a point or each of a list of points, clearance above it.
+
+    Bend the path so that it passes right over each point (horizontally through it, clearance above
+    it; default a tenth of the path's size), e.g. to hop over objects. Start and goal stay.
+    """
+    t = as_trajectory(trajectory)
+    height = OVER_CLEARANCE * extent(t) if clearance is None else resolve_amount(clearance, t)
+    tops = [centre + np.array([0.0, 0.0, height]) for centre in _points(points)]
+    for _ in range(OVER_ROUNDS if len(tops) > 1 else 1):  # each bend nudges the others' passes
+        for top in tops:
+            t = pass_through(t, top)
+    return t
+
+
+OVER_ROUNDS = 4
+"""Rounds of bends over several points: each round puts back what the neighbours' bends moved."""
 
 
 def _room_to_bend(t: Array, target: Array, k: int) -> int:

@@ -1,0 +1,47 @@
+"""pass_over: the path passes right above each point, in turn, with its start and goal kept."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from trajadapt.skills.objects import pass_over
+
+
+def _line(count: int = 40) -> np.ndarray:
+    x = np.linspace(0.0, 1.0, count)
+    return np.stack([x, 0.1 * np.sin(3 * x), np.zeros(count), np.ones(count)], axis=1)
+
+
+def _over(path: np.ndarray, point: np.ndarray) -> tuple[float, float]:
+    """Height above the point and horizontal distance, at the waypoint horizontally nearest it."""
+    horizontal = np.linalg.norm(path[:, :2] - point[:2], axis=1)
+    k = int(np.argmin(horizontal))
+    return float(path[k, 2] - point[2]), float(horizontal[k])
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    st.lists(
+        st.tuples(st.floats(0.2, 0.8), st.floats(-0.15, 0.15), st.floats(-0.2, 0.2)), min_size=1, max_size=2
+    ).filter(lambda ps: len(ps) < 2 or abs(ps[0][0] - ps[1][0]) > 0.25)
+)
+def test_the_path_passes_above_each_point_and_keeps_its_ends(
+    points: list[tuple[float, float, float]],
+) -> None:
+    path = _line()
+    centres = [np.array(p) for p in points]
+    adapted = pass_over(path, centres if len(centres) > 1 else centres[0])
+    assert np.allclose(adapted[[0, -1]], path[[0, -1]])
+    for centre in centres:
+        above, off = _over(adapted, centre)
+        assert above > 0.05
+        assert off < 0.05
+
+
+def test_a_stated_clearance_is_the_height_above_the_point() -> None:
+    above, off = _over(pass_over(_line(), [0.5, 0.0, 0.0], clearance=0.3), np.array([0.5, 0.0, 0.0]))
+    assert above == pytest.approx(0.3, abs=0.03)
+    assert off < 0.03

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.readers.stated_amounts import direction_amounts, use_stated_amounts
+from trajadapt.readers.clause_amounts import direction_amounts
+from trajadapt.readers.stated_amounts import use_stated_amounts
 
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
 

@@ -6,9 +6,10 @@ words tie to one object. Each reader looks at the program and the user's words (
 any feedback) and changes the lines that contradict them, with a note that says what and why.
 ``read_against_words`` runs them all in order; the session, the tests and the replay tool call it.
 
-Readers share the word helpers of ``readers.words`` and ``readers.object_words`` and the code helpers
-of ``trajadapt.code_parse``; no reader imports another. To add one: write a module here with a
-function ``(code, asked, names) -> (code, notes)`` and put it in ``READERS`` where it must run.
+Readers share the word helpers of ``readers.words``, ``readers.object_words`` and
+``readers.clause_amounts`` and the code helpers of ``trajadapt.code_parse``; no reader imports
+another. To add one: write a module here with a function ``(code, asked, names) -> (code, notes)``
+and put it in ``READERS`` where it must run.
 """
 
 from __future__ import annotations

@@ -10,7 +10,7 @@ exactly one such height and the code has exactly one height step with that numbe
 skill, the step's skill is replaced. A review note says so.
 
 A number the words give as a change is no height at all: "descend by 0.1", "the path raised by
-0.2", "climb 0.3" move the path by that much (``stated_amounts.direction_amounts``), where the
+0.2", "climb 0.3" move the path by that much (``clause_amounts.direction_amounts``), where the
 model wrote ``set_height(t, 0.1)`` or ``stay_below(t, 0.1)``. When the words give no height, no
 ground or floor, and one amount up or down, the one height step with that number becomes
 ``shift`` by it.
@@ -23,7 +23,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
-from trajadapt.readers.stated_amounts import direction_amounts
+from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.words import NUMBER_TEXT
 
 NUMBER = rf"({NUMBER_TEXT})"

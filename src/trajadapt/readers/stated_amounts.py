@@ -3,7 +3,7 @@
 A small model writes ``shift(t, 'up', 'slightly')`` for "go upwards by 0.2 walking slightly closer to
 the table": the vague word belongs to another part of the sentence, the user's number is lost. Each
 clause (split by ``clause_split.split_clauses``) with exactly one direction word and exactly one
-number given to a direction (``words.directed_numbers``: "by 0.2", "0.2 to the left") gives that
+number given to a direction (``clause_amounts.direction_amounts``: "by 0.2", "0.2 to the left") gives that
 direction its amount; the one directional step in that direction (``shift``, ``shift_goal``,
 ``shift_start``, ``shift_part``) whose amount is a word or missing gets the number. A step with a
 number of its own keeps it (``unstated_amounts`` judges numbers), and a clause with two directions
@@ -16,21 +16,9 @@ import ast
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
-from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import directed_numbers, said_directions
+from trajadapt.readers.clause_amounts import direction_amounts
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
-
-
-def direction_amounts(words: str) -> dict[str, float]:
-    """The amount each direction is given in the clauses of ``words`` ("upwards by 0.2" -> up: 0.2)."""
-    amounts: dict[str, list[float]] = {}
-    for clause in split_clauses(words):
-        said = said_directions(clause)
-        numbers = directed_numbers(clause)
-        if len(said) == 1 and len(numbers) == 1:
-            amounts.setdefault(next(iter(said)), []).append(numbers[0])
-    return {direction: found[0] for direction, found in amounts.items() if len(set(found)) == 1}
 
 
 def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:

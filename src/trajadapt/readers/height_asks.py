@@ -69,15 +69,11 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         return code, []
     skill, height = heights[0]
     lines = code.splitlines()
-    steps = [i for i, line in enumerate(lines) if _height_step(line) is not None]
-    if len(steps) != 1:
+    step = _one_height_step(lines, height, options=False)
+    if step is None or step[1] == skill:
         return code, []
-    line = lines[steps[0]]
-    written, value = _height_step(line)  # type: ignore[misc]
-    if written == skill or value is None or abs(value - height) > 1e-9 * max(1.0, height):
-        return code, []
-    changed = f"t = {skill}(t, {height:g})"
-    lines[steps[0]] = in_place_of(line, changed)
+    line, changed = lines[step[0]], f"t = {skill}(t, {height:g})"
+    lines[step[0]] = in_place_of(line, changed)
     return "\n".join(lines), [
         f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
     ]
@@ -89,14 +85,11 @@ def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:
     if len(vertical) != 1 or GROUND.search(words):
         return code, []
     (direction, amount), lines = next(iter(vertical.items())), code.splitlines()
-    steps = [i for i, line in enumerate(lines) if _height_step(line, options=True) is not None]
-    if len(steps) != 1:
+    step = _one_height_step(lines, amount, options=True)
+    if step is None:
         return code, []
-    value = _height_step(lines[steps[0]], options=True)[1]  # type: ignore[index]
-    if value is None or abs(value - amount) > 1e-9 * max(1.0, amount):
-        return code, []
-    line, changed = lines[steps[0]], f"t = shift(t, '{direction}', {amount:g})"
-    lines[steps[0]] = in_place_of(line, changed)
+    line, changed = lines[step[0]], f"t = shift(t, '{direction}', {amount:g})"
+    lines[step[0]] = in_place_of(line, changed)
     note = f"`{line.strip()}` -> `{changed}`: the instruction moves the path {direction} by {amount:g}"
     return "\n".join(lines), [note]
 
@@ -105,6 +98,17 @@ def _relation(skill: str) -> str:
     return {"set_height": "a height of", "stay_below": "a height below", "stay_above": "a height above"}[
         skill
     ]
+
+
+def _one_height_step(lines: list[str], number: float, options: bool) -> tuple[int, str] | None:
+    """The index and skill of the code's one height step, if there is one and it holds ``number``."""
+    steps = [(i, found) for i, line in enumerate(lines) if (found := _height_step(line, options)) is not None]
+    if len(steps) != 1:
+        return None
+    index, (skill, value) = steps[0]
+    if value is None or abs(value - number) > 1e-9 * max(1.0, number):
+        return None
+    return index, skill
 
 
 def _height_step(line: str, options: bool = False) -> tuple[str, float | None] | None:

@@ -252,6 +252,8 @@ def pass_through(
 
 
 OVER_CLEARANCE = 0.1  # how far above an object pass_over goes by default (fraction of the path's size)
+OVER_ROUNDS = 4
+"""Rounds of bends over several points: each round puts back what the neighbours' bends moved."""
 
 
 def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceArg = None) -> Array:
@@ -267,10 +269,6 @@ def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceA
         for top in tops:
             t = pass_through(t, top)
     return t
-
-
-OVER_ROUNDS = 4
-"""Rounds of bends over several points: each round puts back what the neighbours' bends moved."""
 
 
 def _room_to_bend(t: Array, target: Array, k: int) -> int:

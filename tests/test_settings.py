@@ -91,6 +91,7 @@ ENVIRONMENT = {
     "REPAIR_CONTRADICTIONS": "yes",
     "CLAUSE_STEPS": "yes",
     "CLAUSE_CHECK": "off",
+    "SHAPE_CHECK": "off",
     "ROBOT": "drone",
 }
 SEEN = {
@@ -108,6 +109,7 @@ SEEN = {
     "repair_contradictions": True,
     "clause_steps": True,
     "clause_check": False,
+    "shape_check": False,
     "robot": "drone",
 }
 

@@ -67,6 +67,10 @@ class Settings:
         clause_check: with ``clause_steps``, run each clause's step alone, and when its measured
             effect contradicts the clause's words, ask once more with what it did; the answer with
             fewer contradictions is kept.
+        shape_check: without ``clause_steps`` (skills mode), when the first answer changes nothing
+            the words ask for, repeats a step or has more steps than the clauses can hold (two per
+            clause that asks for something; ``clauses.shape``), ask once more with that in words;
+            the answer with fewer such findings is kept.
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
         repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
@@ -93,6 +97,7 @@ class Settings:
     repair_contradictions: bool = False
     clause_steps: bool = False
     clause_check: bool = True
+    shape_check: bool = True
     robot: Literal["none", "arm", "drone", "ground"] = "none"
 
     @property

@@ -163,15 +163,21 @@ def _optional_tail(optional: list[tuple[inspect.Parameter, str]]) -> Node | None
 
 
 @lru_cache(maxsize=64)
-def answer_grammar(object_names: tuple[str, ...]) -> Grammar:
-    """The grammar of an answer for a scene with these objects (cached by the names)."""
+def answer_grammar(object_names: tuple[str, ...], steps: tuple[int, int] = (0, MAX_STEPS)) -> Grammar:
+    """The grammar of an answer for a scene with these objects (cached by the names).
+
+    ``steps``: the fewest and the most skill calls the code may have.
+    """
     statements = [f for f in SKILLS if is_statement_skill(f)]
+    least, most = steps
+    step = seq("t = ", Ref("call"), NEWLINE)
     rules: dict[str, Node] = {
         "root": seq('{"high_level_plan": "', Ref("plan"), '", "python_code": "', Ref("code"), '"}'),
         "plan": Some(PLAIN_TEXT_CHAR),
         "code": seq(
             "t = get_trajectory()" + NEWLINE,
-            Upto(seq("t = ", Ref("call"), NEWLINE), MAX_STEPS),
+            *[step] * least,
+            Upto(step, most - least),
             f"{RESULT_VARIABLE} = t",
         ),
         "call": alt(*(Ref(f"call-{f.__name__.replace('_', '-')}") for f in statements)),

@@ -16,11 +16,14 @@ from typing import Any
 from trajadapt.backends.base import ChatMessage, ChatRequest
 from trajadapt.checks.effect import contradictions, measure_effect
 from trajadapt.checks.review import ReviewNote, review_notes
+from trajadapt.clauses.shape import STEPS_PER_CLAUSE, asking_clauses, shape_findings
 from trajadapt.errors import AnswerParseError, BackendError, SessionStateError
 from trajadapt.llm.answer import Plan
+from trajadapt.llm.answer_grammar import MAX_STEPS
 from trajadapt.model.trajectory import Trajectory
 from trajadapt.prompts import render
 from trajadapt.readers import ReaderNote
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.safe_text import ANSWER_CHARS, safe_text
 from trajadapt.session.clause_check import count, findings_by_clause
 from trajadapt.session.conversation import Conversation
@@ -69,6 +72,8 @@ class AdaptationSession(Conversation):
         clauses = self._clauses()
         if clauses and self.settings.clause_check:
             plan = self._second_answer_by_clause(plan, clauses)
+        elif self.settings.shape_check and self.settings.mode == "skills":
+            plan = self._second_answer_by_shape(plan)
         return plan
 
     def approve(self) -> AdaptationResult:
@@ -208,6 +213,39 @@ class AdaptationSession(Conversation):
         self._rewind_to(kept)
         said = f"a step contradicts its words ({problems[2:]}); asked once more, no better"
         self._left_out = [*self._left_out, ReaderNote("clause-check", said)]
+        return plan
+
+    def _second_answer_by_shape(self, plan: Plan) -> Plan:
+        """The first answer asked afresh when it changes nothing or repeats a step (``clauses.shape``).
+
+        The task is sent again with what was wrong and the requests it holds (``prompts/shape.md``),
+        without the first answer in view (a small model shown its answer repeats it), under a grammar
+        that admits one to two steps per request. The answer with fewer findings is kept, as if it had
+        been the first; the other leaves only a note (the log keeps both).
+        """
+        asking = asking_clauses(split_clauses(self.case.instruction, self._names), self._names)
+        first = shape_findings(plan.code, asking)
+        if not first or len(self.messages) < 2:
+            return plan
+        self.on_progress("the answer does not fit the request, asking afresh")
+        said = f"the answer did not fit the request ({'; '.join(first)})"
+        kept, first_state = self._mark(), (list(self.messages), list(self.turns), list(self._checkpoints))
+        task = self.messages[1]
+        self._rewind_to((1, 0, 0, []))
+        requests = "\n".join(f"{i}. {clause}" for i, clause in enumerate(asking, start=1))
+        note = render("shape", problems="; ".join(first), requests=requests)
+        self.messages.append(ChatMessage("user", f"{task.content}\n\n{note}"))
+        most = min(MAX_STEPS, STEPS_PER_CLAUSE * len(asking))
+        try:
+            second: Plan | None = self._ask("draft", said, step_range=(1, most))
+        except (AnswerParseError, BackendError):
+            second = None
+        if second is not None and len(shape_findings(second.code, asking)) < len(first):
+            self.messages[1] = task  # the conversation goes on from the user's own words
+            self._left_out.append(ReaderNote("shape-check", f"{said}; asked afresh, kept the new answer"))
+            return second
+        self.messages, self.turns, self._checkpoints = first_state
+        self._left_out = [*kept[3], ReaderNote("shape-check", f"{said}; asked afresh, no better")]
         return plan
 
     def _clause_findings(self, turn: Turn, clauses: tuple[str, ...]) -> list[tuple[str, list[str]]]:

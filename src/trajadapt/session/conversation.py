@@ -30,6 +30,7 @@ from trajadapt.session.records import Checkpoint, Explanation, ProgressCallback,
 from trajadapt.session.settings import SessionSettings
 
 Mark = tuple[int, int, int, list[ReaderNote]]
+Steps = tuple[int, int]  # the fewest and the most skill calls an answer may have
 
 
 class Conversation:
@@ -155,13 +156,16 @@ class Conversation:
             raise SessionStateError("there is no plan yet; call draft() first")
         return plan
 
-    def _ask(self, kind: TurnKind, user_text: str, first: bool = False) -> Plan:
+    def _ask(
+        self, kind: TurnKind, user_text: str, first: bool = False, step_range: Steps | None = None
+    ) -> Plan:
         """Send the conversation (its last user message already in place) and parse the answer.
 
-        ``first``: the first answer, under the grammar from the instruction's clauses where it applies.
+        ``first``: the first answer, under the grammar from the instruction's clauses where it applies;
+        ``step_range``: the fewest and the most skill calls the answer may have (the scene's grammar).
         """
         for retry in range(self.settings.format_retries + 1):
-            completion = self._complete(first)
+            completion = self._complete(first, step_range)
             self.messages.append(ChatMessage("assistant", completion.text))
             try:
                 plan = self._read_against_words(parse_answer(completion.text))
@@ -205,7 +209,7 @@ class Conversation:
         code, self._left_out = read_against_words(plan.code, self._asked, self._names)
         return replace(plan, code=code) if self._left_out else plan
 
-    def _complete(self, first: bool = False) -> Completion:
+    def _complete(self, first: bool = False, step_range: Steps | None = None) -> Completion:
         """Send the conversation so far and count the time and tokens of the answer.
 
         The first answer to words the user has approved an answer to before is that answer, from
@@ -228,7 +232,7 @@ class Conversation:
             temperature=self.settings.temperature,
             max_tokens=self.settings.max_tokens,
             seed=self.settings.seed,
-            grammar=self._answer_grammar(first),
+            grammar=self._answer_grammar(first, step_range),
             on_text=PlanStream(show).feed,
         )
         started = time.perf_counter()
@@ -239,11 +243,13 @@ class Conversation:
         self._tokens["completion"] += completion.usage.completion_tokens or 0
         return completion
 
-    def _answer_grammar(self, first: bool = False) -> str | None:
+    def _answer_grammar(self, first: bool = False, step_range: Steps | None = None) -> str | None:
         """The scene's answer grammar; for the first answer, the one from the instruction's clauses."""
         if self.settings.mode != "skills" or not self.settings.grammar:
             return None
         clauses = self._clauses() if first else None
         if clauses:
             return clause_answer_grammar(clauses, tuple(self._names)).to_gbnf()
+        if step_range is not None:
+            return answer_grammar(tuple(self._names), step_range).to_gbnf()
         return answer_grammar(tuple(self._names)).to_gbnf()

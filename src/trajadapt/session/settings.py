@@ -41,6 +41,7 @@ class SessionSettings:
     repair_contradictions: bool = False
     clause_steps: bool = False
     clause_check: bool = True
+    shape_check: bool = True
 
     @property
     def leave_out_unasked(self) -> bool:

@@ -159,3 +159,15 @@ def test_an_answer_has_at_most_max_steps_skill_calls() -> None:
     assert grammar.matches(wrapped(*[step] * MAX_STEPS))
     assert not grammar.matches(wrapped(*[step] * (MAX_STEPS + 1)))  # a model repeating a line stops here
     assert "{0,8}" in grammar.to_gbnf()
+
+
+def test_a_list_of_points_is_bounded() -> None:
+    from trajadapt.llm.answer_grammar import MAX_POINTS
+
+    def over(count: int) -> str:
+        points = ", ".join(["detect_objects('box')"] * count)
+        return wrapped(f"t = pass_over(t, [{points}])")
+
+    grammar = answer_grammar(SCENE)
+    assert grammar.matches(over(2)) and grammar.matches(over(MAX_POINTS))
+    assert not grammar.matches(over(MAX_POINTS + 1))

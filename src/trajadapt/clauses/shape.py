@@ -2,10 +2,10 @@
 
 Whatever the wording, an answer of skill calls that changes nothing while the words ask for a change
 is wrong, and so, nearly always, is one that writes the same call twice: the small model's way of
-running on. In the stored model runs of sessions 14 to 16 (ovita-dev and the blind paraphrase
-sets, 456 judged answers) all 24 answers with such a finding failed; more steps than two per clause, without a
-repeat, came only in answers that passed (2), so that is not a finding. The session asks afresh
-with the findings in words (``AdaptationSession.draft``, ``shape_check``).
+running on. In the stored model runs of sessions 14 to 16 (ovita-dev and the blind paraphrase sets,
+456 judged answers) all 24 answers with such a finding failed; more steps than two per clause,
+without a repeat, came only in answers that passed (2), so that is not a finding. The session asks
+afresh with the findings in words (``AdaptationSession.draft``, ``shape_check``).
 """
 
 from __future__ import annotations

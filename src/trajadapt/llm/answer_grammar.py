@@ -36,6 +36,9 @@ PLAIN_KINDS = {float: "number", int: "count", bool: "flag"}
 LANDMARKS = (START_NAMES[0], GOAL_NAMES[0])  # 'start' and 'goal' resolve to the path's own ends
 NEWLINE = "\\n"  # a newline inside the JSON string of the code
 MAX_STEPS = 8  # skill calls per answer: a small model can repeat a line until it runs out of tokens
+MAX_POINTS = 6
+"""Points in one list argument (``pass_over(t, [a, b])``): unbounded, the model once listed two objects
+in turn until it ran out of tokens, so the answer could not be read (session 17)."""
 
 
 def parameter_kind(hint: Any) -> str:
@@ -107,7 +110,9 @@ def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
             seq("[", Ref("number"), ", ", Ref("number"), ", ", Ref("number"), "]"),
             seq("t[", Opt(Lit("-")), Ref("int"), "]"),
         ),
-        "points": alt(Ref("point"), seq("[", Ref("point"), Many(seq(", ", Ref("point"))), "]")),
+        "points": alt(
+            Ref("point"), seq("[", Ref("point"), Upto(seq(", ", Ref("point")), MAX_POINTS - 1), "]")
+        ),
         "direction": quoted_words(DIRECTIONS),
         "distance": alt(Ref("number"), quoted_words(list(AMOUNT_WORDS))),
         "fraction": alt(Ref("number"), quoted_words(list(CLOSER_FRACTIONS))),

@@ -27,10 +27,10 @@ _FRAME = re.compile(rf"t\s*=\s*get_trajectory\(\s*\)|{RESULT_VARIABLE}\s*=\s*t")
 
 def program_steps(code: str) -> tuple[str, ...] | None:
     """The skill calls of a program, in order; None when it is not a plain list of ``t = skill(...)``."""
-    lines = [line.strip() for line in code.splitlines() if line.strip() and not line.lstrip().startswith("#")]
-    if any(line != line.lstrip() for line in code.splitlines() if line.strip()):
+    lines = [line.rstrip() for line in code.splitlines() if line.strip()]
+    if any(line != line.lstrip() for line in lines):
         return None  # indented code: loops or functions, not a list of steps
-    body = [line for line in lines if not _FRAME.fullmatch(line)]
+    body = [line for line in lines if not line.startswith("#") and not _FRAME.fullmatch(line)]
     return tuple(body) if all(_STEP.fullmatch(line) for line in body) else None
 
 

@@ -225,12 +225,12 @@ class AdaptationSession(Conversation):
         """
         asking = asking_clauses(split_clauses(self.case.instruction, self._names), self._names)
         first = shape_findings(plan.code, asking)
-        if not first or len(self.messages) < 2:
+        if not first:
             return plan
         self.on_progress("the answer does not fit the request, asking afresh")
         said = f"the answer did not fit the request ({'; '.join(first)})"
-        kept, first_state = self._mark(), (list(self.messages), list(self.turns), list(self._checkpoints))
-        task = self.messages[1]
+        before = (list(self.messages), list(self.turns), list(self._checkpoints), list(self._left_out))
+        task = self.messages[1]  # after the system prompt: draft() is the session's first request
         self._rewind_to((1, 0, 0, []))
         requests = "\n".join(f"{i}. {clause}" for i, clause in enumerate(asking, start=1))
         note = render("shape", problems="; ".join(first), requests=requests)
@@ -244,8 +244,8 @@ class AdaptationSession(Conversation):
             self.messages[1] = task  # the conversation goes on from the user's own words
             self._left_out.append(ReaderNote("shape-check", f"{said}; asked afresh, kept the new answer"))
             return second
-        self.messages, self.turns, self._checkpoints = first_state
-        self._left_out = [*kept[3], ReaderNote("shape-check", f"{said}; asked afresh, no better")]
+        self.messages, self.turns, self._checkpoints, left_out = before
+        self._left_out = [*left_out, ReaderNote("shape-check", f"{said}; asked afresh, no better")]
         return plan
 
     def _clause_findings(self, turn: Turn, clauses: tuple[str, ...]) -> list[tuple[str, list[str]]]:

@@ -24,6 +24,25 @@ def test_decelerating_never_speeds_a_waypoint_up(values, start):
 
 
 @settings(max_examples=200, deadline=None)
+@given(speeds, st.floats(0.0, 0.95))
+def test_decelerating_slows_every_waypoint_of_its_part_by_the_ramp_and_never_rises(values, start):
+    before = path(values)
+    after = speed_profile(before, "decelerate", start=start)
+    begin = min(start, 0.99)
+    part = before[:, 0] >= begin  # progress is the x coordinate of these straight paths
+    ramp = 1.0 - (before[part, 0] - begin) / (1.0 - begin)
+    assert np.all(after[part, 3] <= before[part, 3] * ramp + 1e-9)
+    assert np.all(np.diff(after[part, 3]) <= 1e-12)
+
+
+def test_decelerating_a_path_that_already_slows_to_the_goal_slows_it_further():
+    slowing = path(list(np.linspace(1.0, 0.0, 40)))  # already the old uniform ramp
+    tail = slowing[:, 0] >= 0.7
+    after = speed_profile(slowing, "decelerate", start=0.7)
+    assert after[tail, 3].mean() < 0.8 * slowing[tail, 3].mean()
+
+
+@settings(max_examples=200, deadline=None)
 @given(speeds, st.floats(0.0, 0.9))
 def test_accelerating_never_slows_a_waypoint_down_and_always_speeds_up_the_end(values, start):
     before = path(values)

@@ -100,7 +100,8 @@ def speed_profile(
     'accelerate' (uniformly up to peak) or 'decelerate' (uniformly down to 0 at the goal), applied from
     fraction start of the path on; peak defaults to the current top speed. Decelerating never makes a
     waypoint faster than it was, accelerating never slower; accelerating a path already at its top
-    speed goes up to the phrase table's "faster" factor of it.
+    speed goes up to the phrase table's "faster" factor of it, and decelerating a path that already
+    slows scales its own speeds down by the same uniform ramp, never rising.
     """
     t = as_trajectory(trajectory)
     s = progress(t)
@@ -121,8 +122,8 @@ def speed_profile(
         raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(PROFILES)}")
     after = s >= begin
     speeds = np.maximum(profiles[key][after], 0.0)
-    if key == "decelerate":
-        speeds = np.minimum(speeds, t[after, 3])
+    if key == "decelerate":  # the ramp applied to the planned speed too, so a slowing path slows more
+        speeds = np.minimum.accumulate(np.minimum(t[after, 3], entry) * (1.0 - local[after]))
     elif key == "accelerate":
         speeds = np.maximum(speeds, t[after, 3])
     t[after, 3] = speeds

@@ -150,3 +150,40 @@ def test_a_part_named_as_a_place_or_a_goal_without_the_object_is_not_a_move_of_i
 ) -> None:
     code = CODE.format(step=step)
     assert scope_to_parts(code, [words]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "expected"),
+    [  # written for this reader, in words none of the benchmark sets has
+        ("Pull the first 4 waypoints toward the cup", "t = move_closer(t, detect_objects('cup'))",
+         "t = move_closer(t, detect_objects('cup'), part=(0, 4))"),
+        ("the first ten points should keep further away from the vase",
+         "t = move_away(t, detect_objects('vase'), 'a bit')",
+         "t = move_away(t, detect_objects('vase'), 'a bit', part=(0, 10))"),
+        ("go left, and bring the first 3 points nearer the lamp", "t = move_closer(t, detect_objects('lamp'), 'a lot')",
+         "t = move_closer(t, detect_objects('lamp'), 'a lot', part=(0, 3))"),
+    ],
+)  # fmt: skip
+def test_an_object_move_of_the_first_waypoints_is_made_on_them(words: str, step: str, expected: str) -> None:
+    code, notes = scope_to_parts(CODE.format(step=step), [words])
+    assert expected in code.splitlines()
+    assert "moves the first" in notes[-1]
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        ("bring the path closer to the cup", "t = move_closer(t, detect_objects('cup'))"),  # no part named
+        (
+            "the first 4 waypoints closer to the cup",
+            "t = move_closer(t, detect_objects('mug'))",
+        ),  # another object
+        (
+            "the first 4 waypoints closer to the cup",
+            "t = move_away(t, detect_objects('cup'))",
+        ),  # the other way
+        ("the first 4 waypoints closer to the cup", "t = move_closer(t, detect_objects('cup'), part='end')"),
+    ],
+)
+def test_object_moves_the_clause_does_not_place_on_the_first_waypoints_stay(words: str, step: str) -> None:
+    assert scope_to_parts(CODE.format(step=step), [words]) == (CODE.format(step=step), [])

@@ -125,3 +125,14 @@ def test_a_pace_in_the_shared_vocabulary_asks_for_a_speed_change(words: str) -> 
         "t = get_trajectory()\nt = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
     )
     assert leave_out_unasked(code, [words], ["box"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words", ["slow down by the box and give it a wider berth", "hurry past the box, hugging it"]
+)
+def test_a_distance_in_the_shared_vocabulary_keeps_its_step_in_a_speed_instruction(words: str) -> None:
+    code = (
+        "t = get_trajectory()\nt = move_away(t, detect_objects('box'))\n"
+        "t = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
+    )
+    assert leave_out_unasked(code, [words], ["box"]) == (code, [])

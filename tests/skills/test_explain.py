@@ -57,6 +57,14 @@ def test_optional_arguments_and_defaults_are_spelled_out() -> None:
     ]
 
 
+def test_an_object_move_on_a_part_says_which_waypoints_move() -> None:
+    lines = explain_code(
+        "t = get_trajectory()\nt = move_closer(t, detect_objects('chair'), 'a bit', part=(0, 6))\n"
+        "modified_trajectory = t"
+    )
+    assert lines == ["brings waypoints 0 to 5 'a bit' (20% of the way) towards the chair"]
+
+
 def test_pass_over_spells_out_its_default_clearance_and_each_object() -> None:
     lines = explain_code(
         "t = get_trajectory()\nt = pass_over(t, [detect_objects('crate'), detect_objects('barrel')])\n"

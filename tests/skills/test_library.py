@@ -126,6 +126,15 @@ def test_move_closer_and_away() -> None:
     assert np.allclose(away[[0, -1]], t[[0, -1]]) and displacement_is_smooth(t, away)
 
 
+def test_an_object_move_given_a_part_moves_all_of_that_part_and_nothing_else() -> None:
+    t, box = curve(), [0.8, 1.0, 1.0]
+    closer = objects.move_closer(t, box, "a bit", part=(0, 6))
+    away = objects.move_away(t, box, 0.2, part=(0, 6))
+    assert np.allclose(closer[6:], t[6:]) and np.allclose(away[6:], t[6:])
+    assert np.allclose(distances(closer, box)[:6], (1 - CLOSER_FRACTIONS["a bit"]) * distances(t, box)[:6])
+    assert np.allclose(distances(away, box)[:6], distances(t, box)[:6] + 0.2)
+
+
 def test_a_vague_move_away_from_something_far_asks_for_little_and_a_number_is_kept() -> None:
     t = curve()
     size = float(np.ptp(t[:, :3], axis=0).max())
@@ -303,6 +312,8 @@ def test_every_skill_is_documented_and_listed() -> None:
         assert function.__doc__ and function.__name__ + "(" in text
     assert "axes" not in text
     assert "resample(trajectory, count)" in text  # a required parameter is never hidden
+    assert "move_closer(trajectory, point, amount=None)" in text  # keyword-only knobs are the pipeline's
+    assert "scale_speed(trajectory, factor, near=None, radius=None, part=None)" in text
 
 
 def test_a_zero_amount_means_the_default_amount() -> None:

@@ -13,7 +13,9 @@ that names one part of the path and one direction asks for a move of that part:
 - past the goal ("after reaching the goal", "beyond the end", "once at the destination") ->
   ``extend`` (also with no direction when the clause says "further", "more", "continue": along the
   final heading), unless the code already goes on past the goal;
-- the first N waypoints ("first 6 points") -> ``shift_part(..., part=(0, N))``;
+- the first N waypoints ("first 6 points") -> ``shift_part(..., part=(0, N))``; moved closer to or
+  away from an object the clause names, with no direction -> that object's one ``move_closer`` /
+  ``move_away`` takes ``part=(0, N)`` (a keyword the prompt does not show: the reader sets it);
 - a new goal ("the new goal position is the midpoint of ...", "the goal should be the lamp", "end at
   the lamp"): a ``pass_through`` or ``move_closer`` of a point the code computes from the scene's
   objects -> ``reach`` of that point (the path ends there instead of passing by).
@@ -43,6 +45,8 @@ from trajadapt.code_parse import (
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
+    AWAY,
+    CLOSER,
     NUMBER_TEXT,
     NUMBER_WORDS,
     SPEED_WORDS,
@@ -171,6 +175,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     notes: list[str] = []
     if NEW_GOAL.search(words):
         _reach_the_new_goal(lines, notes, words)
+    _object_moves_of_first_waypoints(lines, notes, words)
     for move in part_moves(words):
         if move.part == "past the goal" and any(
             called_name(line) in ("extend", "append_segment") for line in lines
@@ -237,6 +242,40 @@ def _reach_the_new_goal(lines: list[str], notes: list[str], words: str) -> None:
     after = f"t = reach(t, {ast.unparse(call.args[1])})"
     lines[index] = in_place_of(lines[index], after)
     notes.append(f"`{before}` -> `{after}`: the instruction gives a new goal, so the path ends there")
+
+
+def _object_moves_of_first_waypoints(lines: list[str], notes: list[str], words: str) -> None:
+    """A clause that brings the first N waypoints closer to an object (or away): its step, on them.
+
+    "Shift the first 6 points closer to the chair" answered with ``move_closer(t, chair)`` moves the
+    path where it passes the chair, not its first points: the one ``move_closer`` (``move_away``)
+    of an object the clause names, written for the whole path, gets ``part=(0, N)``.
+    """
+    for clause in split_clauses(words):
+        count = _first_count(clause)
+        closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
+        if not count or closer == away:
+            continue
+        skill = "move_closer" if closer else "move_away"
+        written = [
+            (i, call)
+            for i, call in _calls(lines, (skill,))
+            if _scene_point(call)
+            and all(names_in(clause, [n]) for n in _detected_names(call))
+            and not any(k.arg == "part" for k in call.keywords)
+        ]
+        if len(written) != 1:
+            continue
+        index, call = written[0]
+        before = lines[index].strip()
+        call.keywords.append(
+            ast.keyword("part", ast.Tuple([ast.Constant(0), ast.Constant(count)], ast.Load()))
+        )
+        after = f"t = {ast.unparse(call)}"
+        lines[index] = in_place_of(lines[index], after)
+        notes.append(
+            f"`{before}` -> `{after}`: the instruction moves the first {count} waypoints, not the path"
+        )
 
 
 def _detect_calls(node: ast.expr) -> list[ast.Call]:

@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from trajadapt.model.scene import without_names
-from trajadapt.readers.words import asks_pace
+from trajadapt.readers.words import asks_distance, asks_pace
 
 
 @dataclass(frozen=True)
@@ -160,6 +160,7 @@ TOPICS = (
             "far",
         ),
         only_with="a speed change",
+        also=asks_distance,  # "a wider berth", "a tighter gap": the readers' one vocabulary
     ),  # fmt: skip
 )
 STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\w*)\s*[,)]")

@@ -161,6 +161,11 @@ def asks_pace(words: str) -> bool:
     return bool(SPEED_WORDS.search(words) or FASTER.search(words) or SLOWER.search(words))
 
 
+def asks_distance(words: str) -> bool:
+    """Whether the words ask to come closer to something or keep further from it."""
+    return bool(CLOSER.search(words) or AWAY.search(words))
+
+
 NUMBER_WORDS = {
     "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
     "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,

@@ -70,12 +70,14 @@ def bind_skills(axes: Axes = PAPER_AXES) -> dict[str, Callable[..., Any]]:
 def signature_line(function: Callable[..., Any]) -> str:
     """``name(args)``: what the prompt shows, without ``axes`` (bound by the sandbox) and optional knobs.
 
-    A required parameter is always shown, whatever its name.
+    A required parameter is always shown, whatever its name; an optional keyword-only one never is:
+    those are set by the pipeline (the sandbox's ``reference``, a reader's ``part`` of an object move).
     """
     parameters = [
         p
         for p in inspect.signature(function).parameters.values()
-        if p.name not in PROMPT_HIDDEN or p.default is inspect.Parameter.empty
+        if p.default is inspect.Parameter.empty
+        or (p.name not in PROMPT_HIDDEN and p.kind is not inspect.Parameter.KEYWORD_ONLY)
     ]
     rendered = []
     for parameter in parameters:

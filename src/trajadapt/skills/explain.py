@@ -52,6 +52,11 @@ TEMPLATES: dict[str, str] = {
     "resample": "resamples the path to {count} evenly spaced waypoints",
     "add_noise": "adds random offsets of {scale} to the positions; start and goal stay",
 }
+IN_A_PART: dict[str, str] = {
+    "move_closer": "brings {span} {amount} towards {point}",
+    "move_away": "pushes {span} {amount} away from {point}",
+}
+"""The sentence of an object move given a ``part`` (a reader's "the first 6 points"): all of it moves."""
 BY_NAME: dict[str, Callable[..., Any]] = {function.__name__: function for function in SKILLS}
 
 
@@ -98,7 +103,16 @@ def explain_call(name: str, args: list[ast.expr], keywords: list[ast.keyword]) -
     words["ends"] = (
         "" if values.get("keep_start", True) and values.get("keep_goal", True) else ", ends included"
     )
+    if name in IN_A_PART and values.get("part") is not None:
+        return IN_A_PART[name].format(span=_span(values["part"]), **words)
     return TEMPLATES[name].format(**words)
+
+
+def _span(part: Any) -> str:
+    """A part of the path in words: 'waypoints 0 to 5' for an index pair, else the part's name."""
+    if isinstance(part, tuple | list) and all(isinstance(p, int) for p in part):
+        return f"waypoints {part[0]} to {part[1] - 1}"
+    return f"the {part} part of the path" if isinstance(part, str) else f"the part {part} of the path"
 
 
 def _value(node: ast.expr) -> Any:

@@ -14,12 +14,14 @@ from trajadapt.model.geometry import Array, extent, progress
 from trajadapt.skills.core import (
     DistanceArg,
     FractionArg,
+    PartArg,
     PointArg,
     PointsArg,
     TrajectoryArg,
     as_point,
     as_trajectory,
     nearest_index,
+    part_mask,
     proximity,
     resolve_amount,
     smoothstep,
@@ -55,20 +57,32 @@ def _weight(t: Array, point: Array) -> Array:
     return proximity(t, point, INFLUENCE * extent(t)) * ends
 
 
+def _where(t: Array, point: Array, part: PartArg) -> Array:
+    """How much each waypoint of an object-centred move takes: around the nearest pass, or a part."""
+    return _weight(t, point) if part is None else part_mask(t, part)
+
+
 def move_closer(
-    trajectory: TrajectoryArg, point: PointArg, amount: FractionArg = None, *, reference: Any = None
+    trajectory: TrajectoryArg,
+    point: PointArg,
+    amount: FractionArg = None,
+    *,
+    reference: Any = None,
+    part: PartArg = None,
 ) -> Array:
     """Bring the path closer to a point; amount is a fraction 0..1 or 'a bit' / 'a lot'.
 
     Bring the path closer to a point: the nearest part moves amount (fraction 0..1, or 'a bit', 'a lot')
-    of the way towards it; start and goal stay. With ``reference`` (the path before other steps moved
+    of the way towards it; start and goal stay. With ``part`` (as ``scale_speed``'s: a word, a
+    fraction pair or a waypoint index pair, "the first 6 points" is ``(0, 6)``) that part moves
+    instead, all of it, ends included. With ``reference`` (the path before other steps moved
     it, of the same length), the distances are promised from the reference, and each waypoint reaches
     its distance across what the other steps did, so that their moves stay (see ``to_distances``).
     """
     t = as_trajectory(trajectory)
     target = as_point(point)
     before = _reference(t, reference)
-    weight = _fraction(amount) * _weight(before, target)
+    weight = _fraction(amount) * _where(before, target, part)
     asked = (1.0 - weight) * np.linalg.norm(before[:, :3] - target, axis=1)
     if reference is not None:  # never further than the other steps left it
         asked = np.minimum(asked, np.linalg.norm(t[:, :3] - target, axis=1))
@@ -76,13 +90,18 @@ def move_closer(
 
 
 def move_away(
-    trajectory: TrajectoryArg, point: PointArg, amount: DistanceArg = None, *, reference: Any = None
+    trajectory: TrajectoryArg,
+    point: PointArg,
+    amount: DistanceArg = None,
+    *,
+    reference: Any = None,
+    part: PartArg = None,
 ) -> Array:
     """Push the path away from a point by amount (a distance, or 'a bit' / 'a lot').
 
     Push the path away from a point by amount (a distance, or 'a bit', 'a lot'); the nearest part moves
     most; start and goal stay. A vague amount shrinks when the path already passes far from the point.
-    ``reference``: as for ``move_closer``.
+    ``reference`` and ``part``: as for ``move_closer``.
     """
     t = as_trajectory(trajectory)
     source = as_point(point)
@@ -90,7 +109,7 @@ def move_away(
     distance = resolve_amount(amount, before)
     if amount is None or isinstance(amount, str):
         distance *= _still_near(before, source)
-    asked = np.linalg.norm(before[:, :3] - source, axis=1) + distance * _weight(before, source)
+    asked = np.linalg.norm(before[:, :3] - source, axis=1) + distance * _where(before, source, part)
     if reference is not None:  # never nearer than the other steps left it
         asked = np.maximum(asked, np.linalg.norm(t[:, :3] - source, axis=1))
     return to_distances(t, before, source, asked)

@@ -80,20 +80,24 @@ SLOWER = re.compile(
 slower), and a verb or adjective of more or less before a speed ("reduce your speed", "raise the
 pace", "at a lower speed")."""
 
+GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(
     r"\b(?:closer|nearer|approach\w*|toward[s]?|hug\w*"
-    r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance|margin))\b",
+    r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance|margin))\b"
+    rf"|\b(?:reduc|decreas|lower|cut|shrink|shrank|shrunk|narrow|lessen|tighten|clos(?:e|es|ed|ing))\w*\s+{GAP_NOUN}",
     re.I,
 )
 AWAY = re.compile(
     r"\b(?:away|further|farther|clear\s+of"
     r"|(?:greater|larger|bigger|more|increased?|wider|extra)"
-    r" (?:distance|berth|space|room|gap|clearance|margin))\b",
+    r" (?:distance|berth|space|room|gap|clearance|margin))\b"
+    rf"|\b(?:increas|widen|grow|grew|enlarg|expand|extend|doubl|rais|boost)\w*\s+{GAP_NOUN}",
     re.I,
 )
 """What asks to come closer to an object, and to keep further from it ("steer clear of", "a wider
-margin"; "avoid" asks a clearance, which the readers leave to ``avoid``; only the effect's flags
-count it as away)."""
+margin", a verb of less or more before a distance: "reduce the gap", "widen your clearance";
+"avoid" asks a clearance, which the readers leave to ``avoid``; only the effect's flags count it as
+away)."""
 
 
 def whole_words(text: str) -> str:

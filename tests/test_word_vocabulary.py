@@ -32,9 +32,17 @@ def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> Non
 
 
 @pytest.mark.parametrize(
-    "words", ["raise the speed near the lamp", "at a higher speed", "lower your pace", "lift the velocity"]
+    "words",
+    [
+        "raise the speed near the lamp",
+        "at a higher speed",
+        "lower your pace",
+        "lift the velocity",
+        "lower the clearance to the lamp",  # a distance: closer, not down
+        "raise your margin around the lamp",
+    ],
 )
-def test_a_word_before_a_speed_names_no_direction(words: str) -> None:
+def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> None:
     assert said_directions(words) == set()
 
 

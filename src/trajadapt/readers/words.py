@@ -117,6 +117,10 @@ def names_in(text: str, names: Iterable[str]) -> list[str]:
 
 OF_SPEED = re.compile(rf"\b[a-z]+\s+{SPEED_NOUN}", re.I)
 """A word before a speed: "higher speed" and "raise the pace" name no direction."""
+OF_DISTANCE = re.compile(rf"\b[a-z]+\s+{GAP_NOUN}", re.I)
+"""A word before a distance: "lower the clearance" and "raise the margin" ask closer or further
+(``CLOSER``, ``AWAY``), not down or up."""
+
 
 DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 """Every word that names a direction, to its canonical direction."""
@@ -149,10 +153,11 @@ def said_directions(words: str) -> set[str]:
     """The directions the words ask the path to move in, canonical ('upwards' -> 'up', 'climb' -> 'up').
 
     A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
-    (``OF_SPEED``) are left out.
+    (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
+    ``OF_DISTANCE``).
     """
-    found = re.findall(r"[a-z]+", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
-    return {DIRECTION_WORDS[word] for word in found if word in DIRECTION_WORDS}
+    text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
+    return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 
 def longest_names(named: list[str]) -> list[str]:

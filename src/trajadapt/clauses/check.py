@@ -17,7 +17,7 @@ import numpy as np
 
 from trajadapt.checks.effect import NOTICEABLE, Effect, contradictions
 from trajadapt.model.geometry import Axes
-from trajadapt.readers.words import AWAY, CLOSER, asked_kinds, names_in, said_directions
+from trajadapt.readers.words import asked_kinds, asks_distance, names_in, said_directions
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
@@ -43,12 +43,7 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
 def _not_moved_as_said(clause: str, effect: Effect, axes: Axes) -> list[str]:
     """One direction said, no object to go closer to or away from, and nothing moved that way."""
     said = said_directions(clause)
-    if (
-        len(said) != 1
-        or CLOSER.search(clause)
-        or AWAY.search(clause)
-        or findings_of_sign(clause, effect, axes)
-    ):
+    if len(said) != 1 or asks_distance(clause) or findings_of_sign(clause, effect, axes):
         return []
     (direction,) = said
     noticeable = NOTICEABLE * effect.size

@@ -29,10 +29,9 @@ import re
 from collections.abc import Sequence
 
 from trajadapt.readers.words import (
-    AWAY,
-    CLOSER,
     PLACE_WORDS,
     asked_kinds,
+    asks_distance,
     names_in,
     said_directions,
     whole_words,
@@ -181,7 +180,7 @@ def _asks_more(piece: str, previous: str, names: Sequence[str]) -> bool:
 
 def _only_a_place(piece: str, names: Sequence[str]) -> bool:
     """Whether a piece only says where along the path ("passing close to the quill", "you are near it")."""
-    if CLOSER.search(piece) or AWAY.search(piece) or said_directions(piece):
+    if asks_distance(piece) or said_directions(piece):
         return False  # "while moving nearer to the bow" asks to come closer
     return not set(_content_words(PLACE_WORDS.sub(" ", piece), names)) - MOVING
 

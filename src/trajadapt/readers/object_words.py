@@ -20,6 +20,7 @@ from trajadapt.readers.words import (
     NUMBER_TEXT,
     PLACE_WORDS,
     SLOWER,
+    asks_distance,
     asks_pace,
     longest_names,
     names_in,
@@ -61,7 +62,7 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     if asks_pace(clause):
         if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
             return None
-        if CLOSER.search(clause) or AWAY.search(clause):  # "approach the lamp slowly": both, or a place?
+        if asks_distance(clause):  # "approach the lamp slowly": both, or a place?
             return None
         within = WITHIN.search(clause)
         radius = float(within.group(1)) if within else None

@@ -136,3 +136,12 @@ def test_a_distance_in_the_shared_vocabulary_keeps_its_step_in_a_speed_instructi
         "t = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
     )
     assert leave_out_unasked(code, [words], ["box"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words", ["double the distance from the box, two times as far", "keep 3 times further from the box"]
+)
+def test_a_count_of_times_asks_for_no_speed_change(words: str) -> None:
+    code = "t = get_trajectory()\nt = move_away(t, detect_objects('box'))\nt = scale_speed(t, 2.0)\nmodified_trajectory = t"
+    kept, notes = leave_out_unasked(code, [words], ["box"])
+    assert "scale_speed" not in kept and "a speed change" in notes[0]

@@ -164,11 +164,15 @@ TOPICS = (
     ),  # fmt: skip
 )
 STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\w*)\s*[,)]")
+MULTIPLIER = re.compile(
+    r"\b(?:\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|many)\s+times\b", re.I
+)
+"""A count of times ("by two times", "3 times further"): how much, not the "time" of a speed."""
 
 
 def asks_for(topic: Topic, words: str) -> bool:
-    """Whether ``words`` contain a stem of ``topic`` at the start of a word."""
-    lowered = words.lower()
+    """Whether ``words`` contain a stem of ``topic`` at the start of a word ("two times" is no time)."""
+    lowered = MULTIPLIER.sub(" ", words.lower())
     if topic.also is not None and topic.also(words):
         return True
     return any(re.search(r"\b" + re.escape(stem), lowered) for stem in topic.stems)

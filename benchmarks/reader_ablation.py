@@ -23,16 +23,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from unittest import mock
 
-from replay_answers import StoredAnswers  # the sibling script's backend (run from benchmarks/)
+from replay_answers import (
+    StoredAnswers,
+    replay_settings,
+    request_key,
+)  # the sibling script (run from benchmarks/)
 
 from trajadapt import readers
 from trajadapt.bench.halves import half_of
 from trajadapt.bench.runner import BenchCase, BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.llm.answer import parse_answer
 from trajadapt.model.case import Case, load_case
-from trajadapt.model.geometry import AXIS_CONVENTIONS
-from trajadapt.prompts import describe_environment
-from trajadapt.session import SessionSettings
 
 
 @dataclass
@@ -79,10 +80,8 @@ def changed_by(name: str, stored: StoredSet) -> list[tuple[BenchCase, Case, str]
 
 def replay(entries: list[tuple[BenchCase, Case, str]], axes: str, out: Path) -> dict[str, bool]:
     """Pass or fail of each replayed case, by its key, under the readers in force."""
-    answers = [((describe_environment(case), "INSTRUCTION: " + case.instruction), answer)
-               for _, case, answer in entries]  # fmt: skip
-    settings = SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0)
-    config = BenchConfig(out_dir=out, session=settings, force=True)
+    answers = [(request_key(case), answer) for _, case, answer in entries]
+    config = BenchConfig(out_dir=out, session=replay_settings(axes), force=True)
     cases = [bench for bench, _, _ in entries]
     records = run_benchmark(cases, StoredAnswers(answers), config)
     return {case.key: bool((record.get("evaluation") or {}).get("passed"))

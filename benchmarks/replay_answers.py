@@ -21,7 +21,7 @@ from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
 from trajadapt.llm.answer import answer_json
-from trajadapt.model.case import load_case
+from trajadapt.model.case import Case, load_case
 from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import describe_environment
 from trajadapt.session import SessionSettings
@@ -50,6 +50,17 @@ class StoredAnswers(Backend):
             if environment in task and line in task
         ]  # the longest instruction that matches: "Go left by 20" is inside "Go left by 20 keeping ..."
         return Completion(text=max(found)[1] if found else "no stored answer", model=self.model)
+
+
+def request_key(case: Case) -> tuple[str, str]:
+    """What a request's task text holds for ``case``: its environment and its instruction line."""
+    return describe_environment(case), "INSTRUCTION: " + case.instruction
+
+
+def replay_settings(axes: str, read_against_words: bool = True) -> SessionSettings:
+    """The session of a replay: the stored run's axes, no repair round, no format retry."""
+    return SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0,
+                           read_against_words=read_against_words)  # fmt: skip
 
 
 def _answer_after_readers(record: dict[str, Any]) -> str:
@@ -85,11 +96,9 @@ def main() -> None:
         record = json.loads(path.read_text())
         axes = (record.get("settings") or {}).get("axes", axes)
         answer = record.get("answer") or _answer_after_readers(record)
-        loaded = load_case(case.path)
-        answers.append(((describe_environment(loaded), "INSTRUCTION: " + loaded.instruction), answer))
+        answers.append((request_key(load_case(case.path)), answer))
         replayed.append(case)
-    settings = SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0,
-                               read_against_words=not args.no_readers)  # fmt: skip
+    settings = replay_settings(axes, read_against_words=not args.no_readers)
     config = BenchConfig(out_dir=args.out, session=settings, memory=args.memory)
     records = run_benchmark(replayed, StoredAnswers(answers), config)
     write_report(args.out, records)

@@ -115,15 +115,15 @@ def speed_profile(
         "constant": np.full(len(t), top),
         "trapezoidal": top * np.minimum(1.0, np.minimum(local, 1.0 - local) / 0.2),
         "accelerate": entry + (top - entry) * local,
-        "decelerate": entry * (1.0 - local),
+        "decelerate": np.minimum(t[:, 3], entry) * (1.0 - local),  # a slowing path slows more
     }
     key = str(kind).strip().lower()
     if key not in PROFILES:
         raise ValueError(f"unknown profile {kind!r}; use one of: {', '.join(PROFILES)}")
     after = s >= begin
     speeds = np.maximum(profiles[key][after], 0.0)
-    if key == "decelerate":  # the ramp applied to the planned speed too, so a slowing path slows more
-        speeds = np.minimum.accumulate(np.minimum(t[after, 3], entry) * (1.0 - local[after]))
+    if key == "decelerate":
+        speeds = np.minimum.accumulate(speeds)  # never rising
     elif key == "accelerate":
         speeds = np.maximum(speeds, t[after, 3])
     t[after, 3] = speeds

@@ -8,7 +8,13 @@ import re
 
 import pytest
 
-from trajadapt.llm.answer_grammar import answer_grammar, is_statement_skill, parameter_kind, skill_parameters
+from trajadapt.llm.answer_grammar import (
+    MAX_PLAN_CHARS,
+    answer_grammar,
+    is_statement_skill,
+    parameter_kind,
+    skill_parameters,
+)
 from trajadapt.llm.gbnf import Grammar, Lit, Ref, Some, alt, seq
 from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import system_prompt
@@ -122,6 +128,14 @@ def test_the_plan_is_free_text_but_one_json_string() -> None:
     code = "t = get_trajectory()\nmodified_trajectory = t"
     assert grammar.matches(answer(code, "1) Keep it. 2) Keep it, really: [0.2] {ok}"))
     assert not grammar.matches(answer(code, 'a "quoted" plan'))  # would need an escape
+
+
+def test_the_plan_is_bounded_so_a_looping_plan_still_leaves_room_for_the_code() -> None:
+    grammar = answer_grammar(SCENE)
+    code = "t = get_trajectory()\nmodified_trajectory = t"
+    assert grammar.matches(answer(code, "x" * MAX_PLAN_CHARS))
+    assert not grammar.matches(answer(code, "x" * (MAX_PLAN_CHARS + 1)))
+    assert not grammar.matches(answer(code, ""))
 
 
 def test_gbnf_rendering_escapes_and_groups() -> None:

@@ -92,9 +92,9 @@ def test_the_whole_answer_grammar_from_the_clause_list():
         ("go left by 0.2", "slow down near the lamp", "keep the start fixed"), names
     )
 
-    def answer(*lines):
+    def answer(*lines, plan="1) a 2) b"):
         code = "\n".join(["t = get_trajectory()", *lines, "modified_trajectory = t"])
-        return json.dumps({"high_level_plan": "1) a 2) b", "python_code": code})
+        return json.dumps({"high_level_plan": plan, "python_code": code})
 
     assert grammar.matches(
         answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))")
@@ -103,6 +103,8 @@ def test_the_whole_answer_grammar_from_the_clause_list():
         answer("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('box'))")
     )
     assert not grammar.matches(answer("t = shift(t, 'left', 0.2)"))  # a clause dropped
+    asked = ("t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('lamp'))")
+    assert not grammar.matches(answer(*asked, plan="1) go left. " * 60))  # a looping plan: bounded
     assert not grammar.matches(
         answer("t = scale_speed(t, 0.65, near=detect_objects('lamp'))", "t = shift(t, 'left', 0.2)")
     )

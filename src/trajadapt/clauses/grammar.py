@@ -22,13 +22,15 @@ from functools import lru_cache
 from trajadapt.llm.answer_grammar import (
     LANDMARKS,
     NEWLINE,
+    PLAN_TEXT,
+    POINT_RULES,
     call_rule,
     is_statement_skill,
     quoted_words,
     usable_names,
     value_rules,
 )
-from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Some, alt, renamed, seq
+from trajadapt.llm.gbnf import Alt, Grammar, Lit, Node, Opt, Ref, alt, renamed, seq
 from trajadapt.model.geometry import PART_WORDS
 from trajadapt.readers.clause_split import only_keeps
 from trajadapt.readers.words import names_in, whole_words
@@ -130,7 +132,7 @@ def clause_answer_grammar(clauses: tuple[str, ...], names: tuple[str, ...]) -> G
     asking = _asking(clauses, names)
     rules: dict[str, Node] = {
         "root": seq('{"high_level_plan": "', Ref("plan"), '", "python_code": "', Ref("code"), '"}'),
-        "plan": Some(PLAIN_TEXT_CHAR),
+        "plan": PLAN_TEXT,
         "code": seq(
             "t = get_trajectory()" + NEWLINE,
             *(Ref(f"steps-c{index}") for index in asking),
@@ -193,7 +195,7 @@ def _step_rules(
     if objects:
         rules["object"] = alt(*sorted(objects, key=lambda n: (-len(n), n)))
     else:
-        for kind in (*POINT_KINDS, "object"):
+        for kind in {*POINT_KINDS, *POINT_RULES, "object"}:
             del rules[kind]
     return rules
 

@@ -11,7 +11,10 @@ Each argument follows its parameter's kind (``skills.core.ArgKind`` or its Pytho
 waypoint ``t[i]``; a direction is one of the six words; a distance is a number or an amount word; a
 number is a number. So a local model constrained by it cannot invent an object, put a word where a
 number belongs, call a function that does not exist, or forget ``modified_trajectory``. Code that
-needs more than skill calls (raw numpy) is outside it by design.
+needs more than skill calls (raw numpy) is outside it by design. Every repetition in it is bounded
+(steps, the plan's characters, digits, listed points, midpoints of midpoints), so every answer it
+admits is finite: a model caught in a loop is made to close what it loops in, and its answer can
+still be read, where an unbounded one ran out of tokens mid-code and could not.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Annotated, Any
 
-from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Many, Node, Opt, Ref, Some, Upto, alt, seq
+from trajadapt.llm.gbnf import PLAIN_TEXT_CHAR, Alt, Grammar, Lit, Node, Opt, Ref, Upto, alt, seq
 from trajadapt.model.geometry import DIRECTIONS, PART_WORDS
 from trajadapt.sandbox.api import GOAL_NAMES, RESULT_VARIABLE, START_NAMES
 from trajadapt.skills import SKILLS
@@ -36,6 +39,15 @@ PLAIN_KINDS = {float: "number", int: "count", bool: "flag"}
 LANDMARKS = (START_NAMES[0], GOAL_NAMES[0])  # 'start' and 'goal' resolve to the path's own ends
 NEWLINE = "\\n"  # a newline inside the JSON string of the code
 MAX_STEPS = 8  # skill calls per answer: a small model can repeat a line until it runs out of tokens
+MAX_PLAN_CHARS = 600
+"""Characters of the plan: the longest seen was 280; a small model that loops in its plan ("1) Shift
+the path left... 20) Shift the path right...") ran out of tokens before the code and its answer could
+not be read. At the bound the grammar closes the plan and the code follows."""
+PLAN_TEXT = seq(PLAIN_TEXT_CHAR, Upto(PLAIN_TEXT_CHAR, MAX_PLAN_CHARS - 1))
+"""The plan: one JSON string of plain characters, at most ``MAX_PLAN_CHARS``."""
+MAX_DIGITS = 6
+"""Digits of a whole number and of a fraction: the longest written was 0.000271; unbounded, a small
+model can write digits until it runs out of tokens."""
 MAX_POINTS = 6
 """Points in one list argument (``pass_over(t, [a, b])``): unbounded, the model once listed two objects
 in turn until it ran out of tokens, so the answer could not be read (session 17)."""
@@ -94,19 +106,30 @@ def usable_names(names: Sequence[str]) -> list[str]:
     return list(spellings) + [landmark for landmark in LANDMARKS if landmark not in keys]
 
 
+POINT_RULES = ("point", "inner-point", "plain-point")
+"""The rules that make a point: a plain one, or a midpoint of two, at most two midpoints deep."""
+
+
+def midpoint_of(rule: str) -> Node:
+    """``midpoint(a, b)`` of two points of ``rule``."""
+    return seq("midpoint(", Ref(rule), ", ", Ref(rule), ")")
+
+
 def value_rules(object_names: Sequence[str]) -> dict[str, Node]:
     """One rule per argument kind, plus numbers and the scene's object names."""
     digit = alt(*"0123456789")
     return {
         "digit": digit,
-        "int": alt("0", seq(alt(*"123456789"), Many(Ref("digit")))),
-        "number": seq(Opt(Lit("-")), Ref("int"), Opt(seq(".", Some(Ref("digit"))))),
+        "int": alt("0", seq(alt(*"123456789"), Upto(Ref("digit"), MAX_DIGITS - 1))),
+        "fraction-digits": seq(Ref("digit"), Upto(Ref("digit"), MAX_DIGITS - 1)),
+        "number": seq(Opt(Lit("-")), Ref("int"), Opt(seq(".", Ref("fraction-digits")))),
         "count": alt(seq(Ref("int"), Opt(Lit(" * len(t)"))), "len(t)", seq("len(t) // ", Ref("int"))),
         "flag": alt("True", "False"),
         "object": alt(*sorted(usable_names(object_names), key=lambda n: (-len(n), n))),
-        "point": alt(
+        "point": alt(Ref("plain-point"), midpoint_of("inner-point")),
+        "inner-point": alt(Ref("plain-point"), midpoint_of("plain-point")),
+        "plain-point": alt(
             seq("detect_objects('", Ref("object"), "')"),
-            seq("midpoint(", Ref("point"), ", ", Ref("point"), ")"),
             seq("[", Ref("number"), ", ", Ref("number"), ", ", Ref("number"), "]"),
             seq("t[", Opt(Lit("-")), Ref("int"), "]"),
         ),
@@ -178,7 +201,7 @@ def answer_grammar(object_names: tuple[str, ...], steps: tuple[int, int] = (0, M
     step = seq("t = ", Ref("call"), NEWLINE)
     rules: dict[str, Node] = {
         "root": seq('{"high_level_plan": "', Ref("plan"), '", "python_code": "', Ref("code"), '"}'),
-        "plan": Some(PLAIN_TEXT_CHAR),
+        "plan": PLAN_TEXT,
         "code": seq(
             "t = get_trajectory()" + NEWLINE,
             *[step] * least,

@@ -79,6 +79,25 @@ def test_the_shift_goes_to_the_variable_the_trajectory_was_read_into() -> None:
     assert code.splitlines()[1] == "path = shift(path, 'front')"
 
 
-def test_an_answer_with_no_step_is_left_alone() -> None:
-    code = "modified_trajectory = get_trajectory()"
+def test_an_answer_with_no_step_gets_the_asked_direction() -> None:
+    """A program that keeps the path, whether the model wrote it or a reader emptied it, drops the clause."""
+    code, notes = add_asked_directions(program(), ["take it over to the right"])
+    assert code.splitlines() == ["t = get_trajectory()", "t = shift(t, 'right')", "modified_trajectory = t"]
+    assert "no step does" in notes[0]
+
+
+def test_an_answer_the_readers_cannot_follow_is_left_alone() -> None:
+    code = "t = get_trajectory()\nt[:, 0] += 1\nmodified_trajectory = t"
     assert add_asked_directions(code, ["head forward"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "shift"),
+    [
+        ("slide 0.3 over to the right", "t = shift(t, 'right', 0.3)"),
+        ("head over to the left", "t = shift(t, 'left')"),
+    ],
+)
+def test_over_to_a_side_is_a_move_not_a_place(words: str, shift: str) -> None:
+    code, _ = read_against_words(program("t = smooth(t)"), [words], NAMES)
+    assert shift in code.splitlines()

@@ -19,6 +19,9 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("keep going further once you reach the destination", PartMove("past the goal", None, None)),
         ("shift the first 8 waypoints downwards", PartMove("the first 8 waypoints", "down", None, 8)),
         ("push the first five points left", PartMove("the first 5 waypoints", "left", None, 5)),
+        ("nudge the initial 3 waypoints right", PartMove("the first 3 waypoints", "right", None, 3)),
+        ("the opening four points should drop", PartMove("the first 4 waypoints", "down", None, 4)),
+        ("lift the leading 7 waypoints", PartMove("the first 7 waypoints", "up", None, 7)),
     ],
 )
 def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(

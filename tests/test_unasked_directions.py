@@ -32,7 +32,7 @@ def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(
     ("step", "words"),
     [
         ("t = shift(t, 'down')", "go down and further from the lamp"),  # the words say down
-        ("t = shift(t, 'up')\nt = shift(t, 'left')", "further from the lamp"),  # two guesses: which?
+        ("t = shift(t, 'up')\nt = shift(t, 'right')", "go left, further from the lamp"),  # which guesses?
         ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "go up, further from the lamp"),
         ("t = shift(t, 'up')\nt = scale_speed(t, 1.4, part='end')", "faster at the end"),  # a part is named
         ("t = shift(t, 'up')", "make the path smoother"),  # nothing else asked
@@ -82,3 +82,22 @@ def test_an_unsaid_shift_beside_steps_that_make_all_the_words_ask_is_left_out(st
     code, notes = replace_unasked_shifts(CODE.format(step=steps), [words], NAMES)
     assert "shift" not in code and code.count("\n") == steps.count("\n") + 1
     assert "names no direction" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("steps", "words", "expected"),
+    [
+        ("t = shift(t, 'up')\nt = shift(t, 'left')", "further from the lamp",
+         ["t = move_away(t, detect_objects('Lamp'))"]),
+        ("t = shift(t, 'up', 'slightly')\nt = shift(t, 'right', 'slightly')\nt = move_away(t, detect_objects('sofa'))",
+         "ease off whenever the lamp is close and keep clear of the sofa",
+         ["t = scale_speed(t, 0.65, near=detect_objects('Lamp'))", "t = move_away(t, detect_objects('sofa'))"]),
+    ],
+)  # fmt: skip
+def test_several_guesses_where_the_words_say_no_direction_become_the_asked_steps(
+    steps: str, words: str, expected: list[str]
+) -> None:
+    """The first unsaid shift becomes what no step makes; the rest serve no clause and are left out."""
+    code, notes = replace_unasked_shifts(CODE.format(step=steps), [words], NAMES)
+    assert code.splitlines()[1:-1] == expected
+    assert len(notes) == steps.count("shift(")

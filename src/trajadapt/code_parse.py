@@ -95,15 +95,19 @@ def detected_name(node: ast.expr) -> str | None:
     return None
 
 
-def skill_program(lines: list[str], skills: Collection[str]) -> tuple[int, str] | None:
+def skill_program(
+    lines: list[str], skills: Collection[str], *, empty: bool = False
+) -> tuple[int, str] | None:
     """Where a program of skill calls alone reads the trajectory: that line's index and its variable.
 
     None when a line is neither blank, ``name = name``, ``get_trajectory``, ``detect_objects`` nor a
     call of one of ``skills`` (a reader cannot follow what it moves), when no line calls a skill (the
-    program keeps the path), or when nothing reads the trajectory.
+    program keeps the path) unless ``empty`` allows that, or when nothing reads the trajectory.
     """
     followed = (*skills, "get_trajectory", "detect_objects")
-    if not all(_plain(line, followed) for line in lines) or not any(called_name(x) in skills for x in lines):
+    if not all(_plain(line, followed) for line in lines):
+        return None
+    if not empty and not any(called_name(x) in skills for x in lines):
         return None
     start = next((i for i, line in enumerate(lines) if called_name(line) == "get_trajectory"), None)
     return None if start is None else (start, lines[start].split("=")[0].strip())

@@ -23,6 +23,12 @@ SHIFT_LEFT = json.dumps(
     }
 )
 KEEP = json.dumps({"high_level_plan": "1) Keep.", "python_code": "modified_trajectory = get_trajectory()"})
+SHIFT_RIGHT = json.dumps(
+    {
+        "high_level_plan": "1) Shift right.",
+        "python_code": "modified_trajectory = shift(get_trajectory(), 'right')",
+    }
+)  # the other way: a contradiction the readers leave to the judge (an empty answer gets the asked shift)
 
 EXPECTATIONS = """
 version = 2
@@ -49,7 +55,7 @@ def test_same_file_names_in_subfolders_never_collide_and_runs_resume(tmp_path: P
     cases = discover_cases([folder])
     assert sorted(case.key for case in cases) == ["arm/case", "arm/vague", "ground/case"]
     config = BenchConfig(out_dir=tmp_path / "out")
-    backend = ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, KEEP])  # arm/case, arm/vague, ground/case
+    backend = ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, SHIFT_RIGHT])  # arm/case, arm/vague, ground/case
     records = run_benchmark(cases, backend, config)
     assert (tmp_path / "out" / "arm" / "case.result.json").is_file()
     assert (tmp_path / "out" / "ground" / "case.result.json").is_file()
@@ -67,7 +73,7 @@ def test_same_file_names_in_subfolders_never_collide_and_runs_resume(tmp_path: P
 def test_bench_command_writes_report_and_figures(tmp_path: Path, ovita_dir: Path) -> None:
     folder = make_folder(tmp_path, ovita_dir)
     answers = tmp_path / "answers.json"
-    answers.write_text(json.dumps([KEEP, KEEP, KEEP, KEEP, KEEP, KEEP]))
+    answers.write_text(json.dumps([SHIFT_RIGHT] * 6))
     out = tmp_path / "out"
     result = CliRunner().invoke(
         cli,

@@ -93,11 +93,19 @@ def test_a_second_answer_no_better_leaves_no_trace_but_the_note(sandbox) -> None
 
 
 def test_a_step_the_readers_leave_out_counts_as_missing(sandbox) -> None:
-    unasked = "t = scale_speed(t, 2.0, near=detect_objects('box'))"  # no speed word in "go left"
-    left = "t = shift(t, 'left')"
-    backend = ScriptedBackend(answers=[answer(unasked), answer(left)])
+    unasked = "t = scale_speed(t, 2.0, near=detect_objects('box'))"  # no speed word in the words
+    spiral = "t = spiral(t)"
+    backend = ScriptedBackend(answers=[answer(unasked), answer(spiral)])
+    session = AdaptationSession(case("finish with a spiral"), backend, sandbox, SessionSettings())
+    assert session.draft().code.strip() == program(spiral) and len(backend.requests) == 2
+
+
+def test_a_direction_left_without_its_step_gets_it_back_without_asking_again(sandbox) -> None:
+    """The readers give an emptied answer the asked direction ("go left"), so one request is enough."""
+    unasked = "t = scale_speed(t, 2.0, near=detect_objects('box'))"
+    backend = ScriptedBackend(answers=[answer(unasked), answer("t = shift(t, 'right')")])
     session = AdaptationSession(case("go left"), backend, sandbox, SessionSettings())
-    assert session.draft().code.strip() == program(left) and len(backend.requests) == 2
+    assert session.draft().code.strip() == program("t = shift(t, 'left')") and len(backend.requests) == 1
 
 
 @pytest.mark.parametrize(

@@ -22,10 +22,12 @@ from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
+from trajadapt.readers.repeated_steps import leave_out_repeats
 from trajadapt.readers.speed_scope import localize_speed
 from trajadapt.readers.stated_amounts import use_stated_amounts
 from trajadapt.readers.unasked_directions import replace_unasked_shifts
 from trajadapt.readers.unasked_steps import leave_out_unasked
+from trajadapt.readers.unnamed_objects import leave_out_unnamed
 from trajadapt.readers.unstated_amounts import replace_unstated_amounts
 
 ReadFunction = Callable[[str, Sequence[str], Sequence[str]], tuple[str, list[str]]]
@@ -49,7 +51,10 @@ class ReaderNote:
 
 
 READERS: tuple[Reader, ...] = (
+    Reader("repeated-steps", "back-to-back copies of a step: a decoding loop",
+           lambda code, asked, _: leave_out_repeats(code, asked)),
     Reader("unasked-steps", "steps of a topic the words never mention", leave_out_unasked),
+    Reader("unnamed-objects", "steps about an object the words never name", leave_out_unnamed),
     Reader("unstated-amounts", "amounts the words never give",
            lambda code, asked, _: replace_unstated_amounts(code, asked)),
     Reader("asked-directions", "a direction a clause asks and no step makes",
@@ -58,12 +63,12 @@ READERS: tuple[Reader, ...] = (
            lambda code, asked, _: use_stated_amounts(code, asked)),
     Reader("height-asks", "heights said as a limit or a level",
            lambda code, asked, _: relate_heights(code, asked)),
-    Reader("part-scope", "the part of the path a clause moves",
-           lambda code, asked, _: scope_to_parts(code, asked)),
     Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
     Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
            add_asked_relations),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
+    Reader("part-scope", "the part of the path a clause moves",
+           lambda code, asked, _: scope_to_parts(code, asked)),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""

@@ -11,8 +11,9 @@ arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contr
 effect report flags, not a dropped clause) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
 the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone (what
-it moves cannot be read), and so is code with no step at all (it keeps the path: no clause of a
-compound answer was dropped). A review note says so.
+it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
+a reader left out every step it had ("0.3 over to the right" answered with ``pass_over`` of objects
+the words never name), the clause asked a move and nothing makes it. A review note says so.
 """
 
 from __future__ import annotations
@@ -28,11 +29,12 @@ from trajadapt.readers.words import PART_OR_END, intensity_word, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
-    r"\b(?:above|below|beneath|underneath|under|over|behind|atop|up to|down to)\b"
+    r"\b(?:above|below|beneath|underneath|under|over(?!\s+to\b)|behind|atop|up to|down to)\b"
     r"|\b(?:left|right|front|back|top|bottom|side)\s+(?:side\s+)?of\b",
     re.I,
 )
-"""A direction word used as a place ("above the lamp", "to the left of the box"), not a move."""
+"""A direction word used as a place ("above the lamp", "to the left of the box"), not a move ("over to
+the right" is one)."""
 NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
 
@@ -42,9 +44,9 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     lines = code.splitlines()
     moved = {direction for line in lines for direction in _directions(line)}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
-    program = skill_program(lines, SKILL_NAMES)
+    program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None:
-        return code, []  # no step at all is an answer that keeps the path, not a dropped clause
+        return code, []
     start, variable = program[0] + 1, program[1]
     added: list[str] = []
     notes: list[str] = []

@@ -79,7 +79,8 @@ NEW_GOAL = re.compile(
 REFERENCE = re.compile(
     r"\b(?:from|at|since|before|until|till|to|towards?|near|in|reach\w*|approach\w*|arriv\w*)\s+$", re.I
 )  # a part after these words is a place on the path, not the part that moves
-FIRST_COUNT = re.compile(r"\bfirst\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
+FIRST_COUNT = re.compile(r"\b(?:first|initial|opening|leading)\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
+"""The first N waypoints, in the words for the first ones ("the initial 6 points")."""
 KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
 FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|keep going|onward\w*)\b", re.I)
 AMOUNT_NUMBER = re.compile(rf"\b(?:by|for|of)\s+({NUMBER_TEXT})\b", re.I)

@@ -17,8 +17,12 @@ becomes that step:
 When the words ask nothing that no step makes, name no direction and no part or end of the path,
 and another step changes the path or its pace, the one such shift serves no clause and is left out
 ("halve the speed and stay further from the bird" answered with a shift down beside the two asked
-steps). Two such shifts, or a shift the words give a direction for, are left alone. A review note
-says what changed.
+steps). Where the words say no direction at all, several such shifts are read one by one, first to
+last: the first becomes what no step makes, the others serve no clause and are left out ("slow down
+whenever the paddle is within 0.2, and stay 0.2 from the marmoset" answered with a shift up, a shift
+right and ``move_away`` of the marmoset). Several unsaid shifts beside a said direction (which one
+guesses what?), and a shift the words give a direction for, are left alone. A review note says what
+changed.
 Measured on stored answers in docs/benchmarks.md.
 """
 
@@ -61,20 +65,33 @@ def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]
         return code, []  # code the parser refuses (absurdly nested) is left as it is
     words, names = " ".join(asked), list(names)
     lines = code.splitlines()
-    unsaid = [
-        i for i, line in enumerate(lines) if _shift_direction(line) not in (None, *said_directions(words))
-    ]
-    if len(unsaid) != 1:
-        return code, []
-    index = unsaid[0]
+    unsaid = _unsaid_shifts(lines, words)
+    if len(unsaid) > 1 and said_directions(words):
+        return code, []  # some directions said, others not: which shift guesses what cannot be told
+    notes: list[str] = []
+    while unsaid:
+        lines, found = _read_one(lines, unsaid[0], words, names)
+        if not found:
+            break
+        notes += found
+        unsaid = _unsaid_shifts(lines, words)
+    return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _unsaid_shifts(lines: list[str], words: str) -> list[int]:
+    """The indexes of the shifts in a direction none of ``words`` says."""
+    said = said_directions(words)
+    return [i for i, line in enumerate(lines) if _shift_direction(line) not in (None, *said)]
+
+
+def _read_one(lines: list[str], index: int, words: str, names: list[str]) -> tuple[list[str], list[str]]:
+    """``lines`` with the shift at ``index`` made into the asked step or left out, and the note."""
     replaced, reason = _asked_instead(lines, index, words, names)
     if replaced is None:
         return _left_out_beside_others(lines, index, words)
     before = lines[index]
-    lines[index] = in_place_of(before, replaced)
-    return "\n".join(lines), [
-        f"`{before.strip()}` -> `{replaced}`: the instruction names no such direction; {reason}"
-    ]
+    lines = [*lines[:index], in_place_of(before, replaced), *lines[index + 1 :]]
+    return lines, [f"`{before.strip()}` -> `{replaced}`: the instruction names no such direction; {reason}"]
 
 
 def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -> tuple[str | None, str]:
@@ -103,7 +120,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     return step, f"it asks for a {'faster' if faster else 'slower'} pace"
 
 
-def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[str, list[str]]:
+def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[list[str], list[str]]:
     """The code without the shift at ``index`` when the other steps make all the words ask.
 
     That is when the words name no direction and no part or end of the path, and another step
@@ -111,10 +128,10 @@ def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[s
     """
     steps = [i for i, line in enumerate(lines) if called_name(line) not in (None, "get_trajectory")]
     if said_directions(words) or PART_OR_END.search(words) or steps == [index]:
-        return "\n".join(lines), []
-    before = lines.pop(index).strip()
+        return lines, []
+    before = lines[index].strip()
     note = f"left out `{before}`: the instruction names no direction, and the other steps make what it asks"
-    return "\n".join(lines), [note]
+    return [*lines[:index], *lines[index + 1 :]], [note]
 
 
 def _shift_direction(line: str) -> str | None:

@@ -18,6 +18,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from trajadapt.readers.asked_directions import add_asked_directions
+from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
@@ -66,6 +67,8 @@ READERS: tuple[Reader, ...] = (
     Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
     Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
            add_asked_relations),
+    Reader("asked-pauses", "a pause a clause asks for a count of timesteps and no step makes",
+           add_asked_pauses),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("part-scope", "the part of the path a clause moves",
            lambda code, asked, _: scope_to_parts(code, asked)),

@@ -1,0 +1,125 @@
+"""A pause a clause asks for, with its count of timesteps, and no step that pauses.
+
+The pause twin of ``asked_relations`` (issue #24 item 1, "every clause gets its step"): "hold
+position at the trajectory midpoint for five timesteps" came back as two shifts, "stop near the fan
+for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of
+timesteps is a pause: the path goes on after it). A clause asks a pause when it has a word for
+stopping or staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position",
+"hover", "linger") and a
+count of timesteps ("for 10 timesteps", "5 steps"); its place is the one scene object it names, or
+the part of the path it names ('start', 'middle', 'goal': "the midpoint", "halfway"), or, when it
+points back ("hold there") or follows a lead-in ("once at the destination, hold ..."), that of the
+clause before. When no ``wait`` step is in the code, the
+clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>, <count>)`` is added
+as the last step. Code that is not made of skill calls alone is left alone. A review note says so.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.code_parse import called_name, in_place_of, skill_program
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import NUMBER_WORDS, longest_names, names_in
+from trajadapt.skills import SKILL_NAMES
+
+PAUSE_WORDS = re.compile(
+    r"\b(?:paus\w*|wait\w*|hold\w*|halt\w*|stop\w*|hover\w*|linger\w*|freez\w*"
+    r"|(?:stay|remain|keep|stand)\w*\s+(?:still|stationary|put|motionless|in place)"
+    r"|(?:keep|maintain)\w*\s+(?:the\s+|its\s+|your\s+|a\s+)?(?:position|place|spot))\b",
+    re.I,
+)
+"""Words for stopping or staying in place."""
+COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:time\s*)?steps?\b", re.I)
+"""A count of timesteps: "10 timesteps", "five time steps", "7 steps"."""
+PLACES = (
+    ("middle", re.compile(r"\b(?:middle|midpoint|mid-?way|halfway|half way|cent(?:er|re))\b", re.I)),
+    ("start", re.compile(r"\b(?:start\w*|beginning|begin)\b", re.I)),
+    ("goal", re.compile(r"\b(?:goal|end|destination|finish)\b", re.I)),
+)
+"""Parts of the path a pause can be at, and the words that name them."""
+POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)
+LEAD_IN = re.compile(
+    r"^\s*(?:once|when\w*|after|upon|on|at|in|as soon as|halfway|mid-?way|near|by|close to|beside|next to)\b",
+    re.I,
+)
+"""A clause that sets where the next one applies ("once at the destination, hold ...")."""
+
+
+@dataclass(frozen=True)
+class AskedPause:
+    """A pause one clause asks for: where (an object's name or a part) and for how many timesteps."""
+
+    place: str
+    steps: int
+    is_object: bool
+    clause: str
+
+
+def asked_pauses(words: str, names: Iterable[str]) -> list[AskedPause]:
+    """The pauses the clauses of ``words`` ask for, in order (see the module)."""
+    names = list(names)
+    found: list[AskedPause] = []
+    previous: tuple[str, bool] | None = None
+    lead_in = False
+    for clause in split_clauses(words, names):
+        place = _place(clause, names)
+        if place is None and (lead_in or POINTING_BACK.search(clause)):
+            place = previous
+        count = _count(clause)
+        if PAUSE_WORDS.search(clause) and count and place is not None:
+            found.append(AskedPause(place[0], count, place[1], clause))
+        previous, lead_in = place, bool(LEAD_IN.search(clause))
+    return found
+
+
+def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with a ``wait`` for each pause the words ask and no step makes, and a note each."""
+    lines = code.splitlines()
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if program is None or any(called_name(line) == "wait" for line in lines):
+        return code, []
+    variable = program[1]
+    notes: list[str] = []
+    for pause in asked_pauses(" ".join(asked), names):
+        where = f"detect_objects({pause.place!r})" if pause.is_object else repr(pause.place)
+        step = f"{variable} = wait({variable}, {where}, {pause.steps})"
+        said = pause.clause.strip()
+        stop = next((i for i, line in enumerate(lines) if _stops_at(line, where)), None)
+        if stop is not None:
+            notes.append(f"`{lines[stop].strip()}` -> `{step}`: {said!r} pauses, then goes on")
+            lines[stop] = in_place_of(lines[stop], step)
+            continue
+        steps = (*SKILL_NAMES, "get_trajectory")
+        last = max(i for i, line in enumerate(lines) if called_name(line) in steps)
+        lines.insert(last + 1, step)
+        notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
+    return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
+    """The one object the clause names, else the one part of the path it names, else None."""
+    named = longest_names(names_in(clause, names))
+    if len(named) == 1:
+        return named[0], True
+    if named:
+        return None
+    parts = [part for part, pattern in PLACES if pattern.search(clause)]
+    return (parts[0], False) if len(parts) == 1 else None
+
+
+def _count(clause: str) -> int:
+    """The clause's count of timesteps, or 0."""
+    found = COUNT.search(clause)
+    if found is None:
+        return 0
+    word = found.group(1).lower()
+    value = float(word) if word.isdigit() else NUMBER_WORDS.get(word, 0.0)
+    return int(value) if value >= 1 and value == int(value) else 0
+
+
+def _stops_at(line: str, where: str) -> bool:
+    """Whether ``line`` is ``stop_at`` at the place written ``where``."""
+    return called_name(line) == "stop_at" and where.replace(" ", "") in line.replace(" ", "")

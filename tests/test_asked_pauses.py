@@ -1,0 +1,92 @@
+"""A pause a clause asks for a count of timesteps, and no step that pauses (readers.asked_pauses)."""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.asked_pauses import add_asked_pauses, asked_pauses
+
+NAMES = ["vase", "blue cup", "cup"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "place", "steps", "is_object"),
+    [
+        ("linger beside the vase for 4 timesteps", "vase", 4, True),
+        ("halfway along, freeze for three time steps", "middle", 3, False),
+        ("at the very beginning wait 6 steps", "start", 6, False),
+        ("go near the blue cup and stay still there for 8 timesteps", "blue cup", 8, True),
+        ("once at the destination, hold for nine timesteps", "goal", 9, False),
+    ],
+)  # fmt: skip
+def test_a_pause_its_place_and_its_count(words: str, place: str, steps: int, is_object: bool) -> None:
+    assert [(p.place, p.steps, p.is_object) for p in asked_pauses(words, NAMES)] == [
+        (place, steps, is_object)
+    ]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "pause near the vase",  # no count: how long is not said
+        "reduce the speed in steps near the vase",  # "in steps" counts nothing
+        "lift the rest of the path for 5 timesteps",  # no word for stopping
+        "stop for 5 timesteps",  # no place
+        "wait 3 timesteps between the vase and the cup",  # two places
+    ],
+)
+def test_no_count_no_pause_word_or_no_one_place_asks_no_pause(words: str) -> None:
+    assert asked_pauses(words, NAMES) == []
+
+
+def test_a_missing_pause_is_added_as_the_last_step() -> None:
+    code, notes = add_asked_pauses(
+        program("t = move_away(t, detect_objects('cup'))"),
+        ["keep off the cup and halt mid-way for 5 steps"],
+        NAMES,
+    )
+    assert code.splitlines()[-2] == "t = wait(t, 'middle', 5)"
+    assert "no step pauses" in notes[0]
+
+
+def test_a_stop_with_a_count_is_a_pause_and_the_path_goes_on() -> None:
+    code, notes = add_asked_pauses(
+        program("t = stop_at(t, detect_objects('vase'))"),
+        ["come to a stop by the vase for 10 timesteps"],
+        NAMES,
+    )
+    assert code.splitlines()[1] == "t = wait(t, detect_objects('vase'), 10)"
+    assert "pauses, then goes on" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        program(
+            "t = wait(t, 'middle', 2)"
+        ),  # the model paused: its count is the stated-amount readers' business
+        "t = get_trajectory()\nt[5:] = t[5]\nmodified_trajectory = t",  # code the readers cannot follow
+    ],
+)
+def test_code_that_pauses_or_cannot_be_followed_is_left_alone(code: str) -> None:
+    assert add_asked_pauses(code, ["wait in the middle for 5 timesteps"], NAMES) == (code, [])
+
+
+def test_shifts_nobody_asked_give_way_to_the_pause() -> None:
+    """The pause is the step the words ask; the shifts in no said direction then serve no clause."""
+    code, _ = read_against_words(
+        program("t = shift(t, 'up', 'slightly')", "t = shift(t, 'right', 'slightly')"),
+        ["keep the position at the path's midpoint for five timesteps"],
+        NAMES,
+    )
+    assert code.splitlines()[1:-1] == ["t = wait(t, 'middle', 5)"]
+
+
+def test_a_pause_that_points_back_takes_the_place_before() -> None:
+    found = asked_pauses("when you reach the vase, remain still there for 7 steps", NAMES)
+    assert [(p.place, p.steps, p.is_object) for p in found] == [("vase", 7, True)]

@@ -55,7 +55,8 @@ def test_same_file_names_in_subfolders_never_collide_and_runs_resume(tmp_path: P
     cases = discover_cases([folder])
     assert sorted(case.key for case in cases) == ["arm/case", "arm/vague", "ground/case"]
     config = BenchConfig(out_dir=tmp_path / "out")
-    backend = ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, SHIFT_RIGHT])  # arm/case, arm/vague, ground/case
+    # answers for arm/case, arm/vague, ground/case
+    backend = ScriptedBackend(answers=[SHIFT_LEFT, SHIFT_LEFT, SHIFT_RIGHT])
     records = run_benchmark(cases, backend, config)
     assert (tmp_path / "out" / "arm" / "case.result.json").is_file()
     assert (tmp_path / "out" / "ground" / "case.result.json").is_file()

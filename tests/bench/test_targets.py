@@ -53,7 +53,8 @@ def _layout(tmp_path: Path) -> Path:
     for kind in ("cartesian", "speed"):
         (root / "cases" / kind).mkdir(parents=True)
         (root / "targets" / kind).mkdir(parents=True)
-        words = "go to the left" if kind == "cartesian" else "keep the path as it is"  # the answer: LEFT, KEEP
+        # the answers: LEFT for the cartesian case, KEEP for the speed case
+        words = "go to the left" if kind == "cartesian" else "keep the path as it is"
         case = {"trajectory": trajectory, "objects": [], "instruction": words}
         (root / "cases" / kind / "c.json").write_text(json.dumps(case))
         (root / "targets" / kind / "c.json").write_text(json.dumps({"output_traj": target}))

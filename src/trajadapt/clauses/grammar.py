@@ -33,7 +33,7 @@ from trajadapt.llm.answer_grammar import (
 from trajadapt.llm.gbnf import Alt, Grammar, Lit, Node, Opt, Ref, alt, renamed, seq
 from trajadapt.model.geometry import PART_WORDS
 from trajadapt.readers.clause_split import only_keeps
-from trajadapt.readers.words import names_in, whole_words
+from trajadapt.readers.words import PLACE_GROUPS, names_in, whole_words
 from trajadapt.sandbox.api import RESULT_VARIABLE
 from trajadapt.skills import SKILLS
 from trajadapt.skills.events import POSITION_WORDS
@@ -47,16 +47,6 @@ NUMBER = re.compile(r"(?<![\w.])-?(?:\d+(?:\.\d+)?|\.\d+)(?![\w.]*[a-z])", re.I)
 POINTING_BACK = re.compile(r"\b(?:it|its|there|them|that|this|these|those|the same)\b", re.I)
 POINT_KINDS = frozenset({"point", "points"})
 
-PLACE_GROUPS: tuple[tuple[frozenset[str], frozenset[str]], ...] = (
-    (frozenset({"start", "beginning", "begin", "starting", "initial", "initially", "origin"}),
-     frozenset({"start", "beginning"})),
-    (frozenset({"middle", "center", "centre", "halfway", "midway", "mid", "intermediate", "midpoint"}),
-     frozenset({"middle", "center"})),
-    (frozenset({"end", "goal", "final", "finish", "destination", "last", "ending", "target"}),
-     frozenset({"end", "goal", "final"})),
-    (frozenset({"whole", "all", "entire", "everywhere", "throughout"}), frozenset({"all", "whole"})),
-)  # fmt: skip
-"""Words a user says for a place on the path, and the part or position words that name it in code."""
 HALVES = re.compile(r"\b(first|second) half\b", re.I)
 
 

@@ -5,13 +5,13 @@ position at the trajectory midpoint for five timesteps" came back as two shifts,
 for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of
 timesteps is a pause: the path goes on after it). A clause asks a pause when it has a word for
 stopping or staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position",
-"hover", "linger") and a
-count of timesteps ("for 10 timesteps", "5 steps"); its place is the one scene object it names, or
-the part of the path it names ('start', 'middle', 'goal': "the midpoint", "halfway"), or, when it
-points back ("hold there") or follows a lead-in ("once at the destination, hold ..."), that of the
-clause before. When no ``wait`` step is in the code, the
-clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>, <count>)`` is added
-as the last step. Code that is not made of skill calls alone is left alone. A review note says so.
+"hover", "linger") and a count of timesteps ("for 10 timesteps", "5 steps"); its place is the one
+scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
+midpoint", "halfway", "the destination"), or, when it points back ("hold there") or follows a
+lead-in ("once at the destination, hold ..."), that of the clause before. When no ``wait`` step is
+in the code, the clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>,
+<count>)`` is added as the last step. Code that is not made of skill calls alone is left alone. A
+review note says so.
 """
 
 from __future__ import annotations
@@ -22,8 +22,9 @@ from dataclasses import dataclass
 
 from trajadapt.code_parse import called_name, in_place_of, skill_program
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import NUMBER_WORDS, longest_names, names_in
+from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
 from trajadapt.skills import SKILL_NAMES
+from trajadapt.skills.events import POSITION_WORDS
 
 PAUSE_WORDS = re.compile(
     r"\b(?:paus\w*|wait\w*|hold\w*|halt\w*|stop\w*|hover\w*|linger\w*|freez\w*"
@@ -34,12 +35,6 @@ PAUSE_WORDS = re.compile(
 """Words for stopping or staying in place."""
 COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:time\s*)?steps?\b", re.I)
 """A count of timesteps: "10 timesteps", "five time steps", "7 steps"."""
-PLACES = (
-    ("middle", re.compile(r"\b(?:middle|midpoint|mid-?way|halfway|half way|cent(?:er|re))\b", re.I)),
-    ("start", re.compile(r"\b(?:start\w*|beginning|begin)\b", re.I)),
-    ("goal", re.compile(r"\b(?:goal|end|destination|finish)\b", re.I)),
-)
-"""Parts of the path a pause can be at, and the words that name them."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)
 LEAD_IN = re.compile(
     r"^\s*(?:once|when\w*|after|upon|on|at|in|as soon as|halfway|mid-?way|near|by|close to|beside|next to)\b",
@@ -106,18 +101,21 @@ def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
         return named[0], True
     if named:
         return None
-    parts = [part for part, pattern in PLACES if pattern.search(clause)]
+    said = set(whole_words(clause).split())
+    parts = [_position(code_names) for words, code_names in PLACE_GROUPS if said & words]
+    parts = [part for part in parts if part]
     return (parts[0], False) if len(parts) == 1 else None
+
+
+def _position(code_names: frozenset[str]) -> str:
+    """The ``wait`` position word among a place's code names ('' for the whole path: no position)."""
+    return next((word for word in POSITION_WORDS if word in code_names), "")
 
 
 def _count(clause: str) -> int:
     """The clause's count of timesteps, or 0."""
     found = COUNT.search(clause)
-    if found is None:
-        return 0
-    word = found.group(1).lower()
-    value = float(word) if word.isdigit() else NUMBER_WORDS.get(word, 0.0)
-    return int(value) if value >= 1 and value == int(value) else 0
+    return 0 if found is None else whole_count(found.group(1))
 
 
 def _stops_at(line: str, where: str) -> bool:

@@ -48,12 +48,12 @@ from trajadapt.readers.words import (
     AWAY,
     CLOSER,
     NUMBER_TEXT,
-    NUMBER_WORDS,
     SPEED_WORDS,
     directed_numbers,
     intensity_word,
     names_in,
     said_directions,
+    whole_count,
 )
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
@@ -161,11 +161,7 @@ def _clause_amount(clause: str) -> float | str | None:
 
 def _first_count(clause: str) -> int:
     found = FIRST_COUNT.search(clause)
-    if found is None:
-        return 0
-    word = found.group(1).lower()
-    value = float(word) if word.isdigit() else NUMBER_WORDS.get(word, 0.0)
-    return int(value) if value >= 1 and value == int(value) else 0
+    return 0 if found is None else whole_count(found.group(1))
 
 
 def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:

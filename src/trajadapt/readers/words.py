@@ -190,6 +190,29 @@ def stated_numbers(words: str) -> list[float]:
     return [abs(float(n)) for n in NUMBER.findall(words)] + spelled
 
 
+def whole_count(word: str) -> int:
+    """The whole number >= 1 a count is written as (digits or a word: '6', 'six'), or 0.
+
+    >>> whole_count("six"), whole_count("12"), whole_count("half")
+    (6, 12, 0)
+    """
+    word = word.lower()
+    value = float(word) if word.isdigit() else NUMBER_WORDS.get(word, 0.0)
+    return int(value) if value >= 1 and value == int(value) else 0
+
+
+PLACE_GROUPS: tuple[tuple[frozenset[str], frozenset[str]], ...] = (
+    (frozenset({"start", "beginning", "begin", "starting", "initial", "initially", "origin"}),
+     frozenset({"start", "beginning"})),
+    (frozenset({"middle", "center", "centre", "halfway", "midway", "mid", "intermediate", "midpoint"}),
+     frozenset({"middle", "center"})),
+    (frozenset({"end", "goal", "final", "finish", "destination", "last", "ending", "target"}),
+     frozenset({"end", "goal", "final"})),
+    (frozenset({"whole", "all", "entire", "everywhere", "throughout"}), frozenset({"all", "whole"})),
+)  # fmt: skip
+"""Words a user says for a place on the path, and the part or position words that name it in code."""
+
+
 def intensity_word(words: str) -> str | None:
     """The user's vague amount word, if any ('a lot', 'slightly', ...)."""
     lowered = words.lower()

@@ -113,6 +113,11 @@ def skill_program(
     return None if start is None else (start, lines[start].split("=")[0].strip())
 
 
+def after_last_step(lines: list[str], skills: Collection[str]) -> int:
+    """The index just after the program's last skill call (after ``get_trajectory`` when it has none)."""
+    return 1 + max(i for i, line in enumerate(lines) if called_name(line) in (*skills, "get_trajectory"))
+
+
 def _plain(line: str, callables: Collection[str]) -> bool:
     if not line.strip() or called_name(line) in callables:
         return True

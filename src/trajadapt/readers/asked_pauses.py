@@ -20,7 +20,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import called_name, in_place_of, skill_program
+from trajadapt.code_parse import after_last_step, called_name, in_place_of, skill_program
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
 from trajadapt.skills import SKILL_NAMES
@@ -87,9 +87,7 @@ def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> t
             notes.append(f"`{lines[stop].strip()}` -> `{step}`: {said!r} pauses, then goes on")
             lines[stop] = in_place_of(lines[stop], step)
             continue
-        steps = (*SKILL_NAMES, "get_trajectory")
-        last = max(i for i, line in enumerate(lines) if called_name(line) in steps)
-        lines.insert(last + 1, step)
+        lines.insert(after_last_step(lines, SKILL_NAMES), step)
         notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
     return ("\n".join(lines), notes) if notes else (code, [])
 

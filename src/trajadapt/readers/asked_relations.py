@@ -21,7 +21,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import SPEED_STEPS, called_name, skill_program
+from trajadapt.code_parse import SPEED_STEPS, after_last_step, called_name, skill_program
 from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.words import PART_OR_END, intensity_word
 from trajadapt.skills import SKILL_NAMES
@@ -54,8 +54,8 @@ def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -
         )
     if not added:
         return code, []
-    last = max(i for i, line in enumerate(lines) if called_name(line) in SKILL_NAMES)
-    return "\n".join([*lines[: last + 1], *added, *lines[last + 1 :]]), notes
+    end = after_last_step(lines, SKILL_NAMES)
+    return "\n".join([*lines[:end], *added, *lines[end:]]), notes
 
 
 def _names(line: str, name: str) -> bool:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from trajadapt.readers import read_against_words
-from trajadapt.readers.asked_pauses import add_asked_pauses, asked_pauses
+from trajadapt.readers.asked_pauses import SOME_TIME_STEPS, add_asked_pauses, asked_pauses
 
 NAMES = ["vase", "blue cup", "cup"]
 
@@ -22,6 +22,13 @@ def program(*steps: str) -> str:
         ("at the very beginning wait 6 steps", "start", 6, False),
         ("go near the blue cup and stay still there for 8 timesteps", "blue cup", 8, True),
         ("once at the destination, hold for nine timesteps", "goal", 9, False),
+        # a length said without a count: SOME_TIME_STEPS; "idle", "dwell", "hang" are pause words
+        ("idle beside the vase for a little while", "vase", SOME_TIME_STEPS, True),
+        ("dwell briefly at the midpoint", "middle", SOME_TIME_STEPS, False),
+        ("hang in the air by the blue cup for some moments", "blue cup", SOME_TIME_STEPS, True),
+        # the count in the clause after a pause with a place and no count
+        ("come to a standstill next to the vase and then wait out 7 steps", "vase", 7, True),
+        ("freeze at the start, dwell for two timesteps", "start", 2, False),
     ],
 )  # fmt: skip
 def test_a_pause_its_place_and_its_count(words: str, place: str, steps: int, is_object: bool) -> None:
@@ -34,6 +41,7 @@ def test_a_pause_its_place_and_its_count(words: str, place: str, steps: int, is_
     "words",
     [
         "pause near the vase",  # no count: how long is not said
+        "hold the height near the vase for a while",  # no word for stopping: a height held for a part
         "reduce the speed in steps near the vase",  # "in steps" counts nothing
         "lift the rest of the path for 5 timesteps",  # no word for stopping
         "stop for 5 timesteps",  # no place

@@ -23,6 +23,7 @@ from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
+from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
 from trajadapt.readers.speed_scope import localize_speed
 from trajadapt.readers.stated_amounts import use_stated_amounts
@@ -67,6 +68,8 @@ READERS: tuple[Reader, ...] = (
     Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
     Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
            add_asked_relations),
+    Reader("past-the-goal", "a place the words ask to go to once the goal is reached",
+           add_destination),
     Reader("asked-pauses", "a pause a clause asks for a count of timesteps and no step makes",
            add_asked_pauses),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),

@@ -5,10 +5,12 @@ position at the trajectory midpoint for five timesteps" came back as two shifts,
 for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of
 timesteps is a pause: the path goes on after it). A clause asks a pause when it has a word for
 stopping or staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position",
-"hover", "linger") and a count of timesteps ("for 10 timesteps", "5 steps"); its place is the one
-scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
-midpoint", "halfway", "the destination"), or, when it points back ("hold there") or follows a
-lead-in ("once at the destination, hold ..."), that of the clause before. When no ``wait`` step is
+"hover", "linger", "idle", "dwell") and a count of timesteps ("for 10 timesteps", "5 steps"); its
+place is the one scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
+midpoint", "halfway", "the destination"), or, when it points back ("hold there"), follows a
+lead-in ("once at the destination, hold ...") or a pause with no count ("stop at the midpoint and
+idle for 5 timesteps"), that of the clause before. A length said without a count ("for a while",
+"for some time", "briefly") is ``SOME_TIME_STEPS`` timesteps. When no ``wait`` step is
 in the code, the clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>,
 <count>)`` is added as the last step. Code that is not made of skill calls alone is left alone. A
 review note says so.
@@ -27,14 +29,23 @@ from trajadapt.skills import SKILL_NAMES
 from trajadapt.skills.events import POSITION_WORDS
 
 PAUSE_WORDS = re.compile(
-    r"\b(?:paus\w*|wait\w*|hold\w*|halt\w*|stop\w*|hover\w*|linger\w*|freez\w*"
-    r"|(?:stay|remain|keep|stand)\w*\s+(?:still|stationary|put|motionless|in place)"
+    r"\b(?:paus\w*|wait\w*|halt\w*|stop\w*|hover\w*|linger\w*|freez\w*|idl\w*|dwell\w*|hang\w*|standstill"
+    r"|hold(?:s|ing)?(?!\s+(?:the|this|that|its|your|a|an)\s+(?!position|place|spot|station|pose)\w)"
+    r"|(?:stay|remain|keep|stand)\w*\s+(?:still|stationary|put|motionless|in place|in the air|aloft)"
     r"|(?:keep|maintain)\w*\s+(?:the\s+|its\s+|your\s+|a\s+)?(?:position|place|spot))\b",
     re.I,
 )
-"""Words for stopping or staying in place."""
+"""Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
 COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:time\s*)?steps?\b", re.I)
 """A count of timesteps: "10 timesteps", "five time steps", "7 steps"."""
+SOME_TIME = re.compile(
+    r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
+    r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily)\b",
+    re.I,
+)
+"""A pause's length said without a count: "for a while", "for some time", "briefly"."""
+SOME_TIME_STEPS = 10
+"""The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)
 LEAD_IN = re.compile(
     r"^\s*(?:once|when\w*|after|upon|on|at|in|as soon as|halfway|mid-?way|near|by|close to|beside|next to)\b",
@@ -58,15 +69,16 @@ def asked_pauses(words: str, names: Iterable[str]) -> list[AskedPause]:
     names = list(names)
     found: list[AskedPause] = []
     previous: tuple[str, bool] | None = None
-    lead_in = False
+    carries = False  # the clause before sets the place of this one
     for clause in split_clauses(words, names):
         place = _place(clause, names)
-        if place is None and (lead_in or POINTING_BACK.search(clause)):
+        if place is None and (carries or POINTING_BACK.search(clause)):
             place = previous
         count = _count(clause)
-        if PAUSE_WORDS.search(clause) and count and place is not None:
+        pauses = bool(PAUSE_WORDS.search(clause))
+        if pauses and count and place is not None:
             found.append(AskedPause(place[0], count, place[1], clause))
-        previous, lead_in = place, bool(LEAD_IN.search(clause))
+        previous, carries = place, bool(LEAD_IN.search(clause)) or (pauses and not count)
     return found
 
 
@@ -111,9 +123,11 @@ def _position(code_names: frozenset[str]) -> str:
 
 
 def _count(clause: str) -> int:
-    """The clause's count of timesteps, or 0."""
+    """The clause's count of timesteps (``SOME_TIME_STEPS`` for "for a while"), or 0."""
     found = COUNT.search(clause)
-    return 0 if found is None else whole_count(found.group(1))
+    if found is not None:
+        return whole_count(found.group(1))
+    return SOME_TIME_STEPS if SOME_TIME.search(clause) else 0
 
 
 def _stops_at(line: str, where: str) -> bool:

@@ -37,7 +37,11 @@ from trajadapt.readers.words import (
     whole_words,
 )
 
-BREAKS = re.compile(r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also|(?<!\ba )while)\b", re.I)
+BREAKS = re.compile(
+    r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also"
+    r"|(?<!\ba )(?<!\blittle )(?<!\bshort )(?<!\bgood )while)\b",
+    re.I,
+)
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
 
 LEAD_INS = re.compile(
@@ -215,8 +219,8 @@ def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:
 
 
 SETTING_WORDS = frozenset(
-    "goal start end position destination target point path trajectory arriving arrive reach reached "
-    "done finished there middle halfway".split()
+    "goal start end position destination target point path trajectory arriving arrive arrives arrival "
+    "reach reaches reached get gets got hit hits at done finished there middle halfway".split()
 )
 """Words a lead-in may have besides its opening word and object names."""
 

@@ -48,6 +48,7 @@ from trajadapt.readers.words import (
     AWAY,
     CLOSER,
     NUMBER_TEXT,
+    PAST_THE_GOAL,
     SPEED_WORDS,
     directed_numbers,
     intensity_word,
@@ -57,9 +58,6 @@ from trajadapt.readers.words import (
 )
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
-AFTER_GOAL = re.compile(
-    r"\b(?:after|past|beyond|once)\b(?:\s+\w+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)\b", re.I
-)
 START = re.compile(
     r"\b(?:the\s+(?:start|beginning)\b|start(?:ing)?\s+(?:position|point|waypoint|pose|location)"
     r"|initial\s+(?:position|point|waypoint|pose|location)|beginning)",
@@ -86,7 +84,9 @@ FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|kee
 AMOUNT_NUMBER = re.compile(rf"\b(?:by|for|of)\s+({NUMBER_TEXT})\b", re.I)
 
 SHIFTS = ("shift", "shift_goal")
-LANDMARK_STEPS = ("move_closer", "move_away")
+LANDMARK_STEPS = ("move_closer", "move_away", "append_segment")
+"""Steps a small model writes with the path's own start or goal as their point (a segment appended
+to the goal goes nowhere)."""
 LANDMARKS = {name.casefold() for name in START_NAMES + GOAL_NAMES}
 
 
@@ -131,7 +131,7 @@ def _clause_move(clause: str) -> PartMove | None:
         return None
     direction = next(iter(directions), None)
     amount = _clause_amount(clause)
-    if AFTER_GOAL.search(clause):
+    if PAST_THE_GOAL.search(clause):
         if direction is None and not FURTHER.search(clause):
             return None
         return PartMove("past the goal", direction, amount)
@@ -174,9 +174,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         _reach_the_new_goal(lines, notes, words)
     _object_moves_of_first_waypoints(lines, notes, words)
     for move in part_moves(words):
-        if move.part == "past the goal" and any(
-            called_name(line) in ("extend", "append_segment") for line in lines
-        ):
+        if move.part == "past the goal" and any(_goes_on(line) for line in lines):
             continue
         index, amount = _step_for(move, lines, said)
         if index is None:
@@ -310,6 +308,12 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
         return None, None
     index, call = written[0]
     return index, call.args[2] if len(call.args) > 2 else None
+
+
+def _goes_on(line: str) -> bool:
+    """Whether the step goes on past the goal: ``extend``, or a segment to somewhere else than the goal."""
+    call = call_of(line, ("extend", "append_segment"))
+    return call is not None and (called_name(line) == "extend" or not _on_landmark(call))
 
 
 def _calls(lines: list[str], skills: tuple[str, ...]) -> list[tuple[int, ast.Call]]:

@@ -45,6 +45,18 @@ PART_OR_END = re.compile(
 first half"), so it does not ask the whole path to move."""
 
 
+PAST_THE_GOAL = re.compile(
+    r"\b(?:(?:after|past|beyond|once|upon)\b(?:\s+[\w']+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)"
+    r"|(?:when\w*|as soon as|on|first)\s+(?:[\w']+\s+){0,2}?"
+    r"(?:reach\w*|arriv\w*(?:\s+at)?|get\w*\s+to|got\s+to|hit\w*|at)\s+(?:the\s+)?(?:goal|end|destination|final)"
+    r"|(?:goal|destination)(?:\s+\w+){0,2}?\s+(?:is|has been|was|gets)\s+reached)\b",
+    re.I,
+)
+"""Words that place a request after the path's goal: "after reaching the goal", "past the end", "once
+at the destination", "upon arrival at the goal", "when you get to the goal", "once the goal is
+reached"."""
+
+
 PACE_PHRASES = re.compile(
     r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)\s+(?:down|up)\b",
     re.I,

@@ -1,0 +1,104 @@
+"""A place the words ask the robot to go once it has reached the goal (readers.past_the_goal).
+
+Phrasings written for the reader; none of the benchmark sets has them.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.past_the_goal import add_destination, after_goal
+
+NAMES = ["vase", "blue cup", "cup", "shelf"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "destination"),
+    [
+        ("when the robot arrives at the goal, steer toward the vase and linger above it", "vase"),
+        ("go left, then after the end make your way to the blue cup", "blue cup"),
+        ("travel on to the shelf after reaching the goal", "shelf"),
+        ("On getting to the destination, proceed to the cup.", "cup"),
+        ("Reach the goal first. Then carry on to the vase.", None),  # "first" does not open it
+        ("First get to the goal. Then carry on to the vase.", "vase"),
+        ("once past the goal, continue 0.3 forward", None),  # a move, no place
+        ("head to the vase", None),  # nothing after the goal
+        ("after the goal, go to the vase and then to the shelf", None),  # two places: which is the end?
+        ("once the goal is reached keep going, with the path raised toward the shelf", None),  # the path
+        ("prolong the route until it gets to the shelf", "shelf"),  # lengthening is going past the goal
+        ("extend it by 0.3 toward the shelf", None),  # a length: not to the shelf itself
+        ("extend the path and slow down near the vase", None),  # the vase is no place to go
+    ],
+)  # fmt: skip
+def test_the_place_to_go_after_the_goal(words: str, destination: str | None) -> None:
+    assert after_goal(words, NAMES).destination == destination
+
+
+@pytest.mark.parametrize(
+    ("steps", "words", "kept"),
+    [
+        (("t = move_closer(t, detect_objects('goal'))",), "upon reaching the destination, travel to the vase", ()),
+        (("t = pass_over(t, detect_objects('vase'))",), "once at the end, fly over to the vase", ()),
+        (("t = extend(t, 'a bit', 'up')",), "after the goal, head up to the vase", ()),
+        (("t = shift(t, 'up', 'a bit')",), "when you reach the goal, move to the vase and stay above it", ()),
+        (
+            ("t = shift(t, 'up', 'a bit')",),
+            "go up a bit, and when you reach the goal, move to the vase and stay above it",
+            ("t = shift(t, 'up', 'a bit')",),
+        ),  # the rise is asked before the goal
+        (
+            ("t = move_away(t, detect_objects('vase'))",),
+            "keep away from the vase, and when you reach the goal, go to the vase",
+            ("t = move_away(t, detect_objects('vase'))",),
+        ),  # the vase is named before the goal too
+        (
+            ("t = shift(t, 'left', 'a bit')", "t = extend(t)"),
+            "nudge it left a bit and lengthen it smoothly so it reaches the vase",
+            ("t = shift(t, 'left', 'a bit')",),
+        ),  # the lengthening's clause also moves the path
+        (
+            ("t = scale_speed(t, 0.5, near=detect_objects('vase'))",),
+            "after the goal, approach the vase slowly",
+            ("t = scale_speed(t, 0.5, near=detect_objects('vase'))",),
+        ),  # a speed step says how fast, not where to go
+    ],
+)  # fmt: skip
+def test_the_steps_written_for_the_place_leave_and_a_segment_to_it_ends_the_code(
+    steps: tuple[str, ...], words: str, kept: tuple[str, ...]
+) -> None:
+    code, notes = add_destination(program(*steps), [words], NAMES)
+    assert code == program(*kept, "t = append_segment(t, detect_objects('vase'))")
+    assert len(notes) == len(steps) - len(kept) + 1
+    assert all("the goal" in note for note in notes)
+
+
+@pytest.mark.parametrize(
+    ("code", "words"),
+    [
+        (program("t = append_segment(t, detect_objects('vase'))"), "after the goal, go to the vase"),
+        (program("t = move_closer(t, detect_objects('vase'))"), "go to the vase"),
+        ("t = get_trajectory()\nt[:, 0] += 1\nmodified_trajectory = t", "after the goal, go to the vase"),
+    ],
+)
+def test_a_segment_there_no_place_after_the_goal_or_code_it_cannot_follow_stays(
+    code: str, words: str
+) -> None:
+    assert add_destination(code, [words], NAMES) == (code, [])
+
+
+def test_in_the_stage_the_place_comes_before_the_pause_there() -> None:
+    code, notes = read_against_words(
+        program("t = pass_over(t, detect_objects('vase'))"),
+        ["once you get to the goal, steer toward the vase and idle above it for a little while"],
+        NAMES,
+    )
+    assert code.splitlines()[1:3] == [
+        "t = append_segment(t, detect_objects('vase'))",
+        "t = wait(t, detect_objects('vase'), 10)",
+    ]
+    assert [note.reader for note in notes] == ["past-the-goal", "past-the-goal", "asked-pauses"]

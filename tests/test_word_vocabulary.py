@@ -85,6 +85,11 @@ def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster
         ("widen the gap between you and the vase", "away"),
         ("boost your clearance around the vase", "away"),
         ("grow the distance to the vase", "away"),
+        # closeness said as a tight pass or a place right beside the object (session 20)
+        ("sweep tightly past the vase", "closer"),
+        ("bring the route in nice and tight to the vase", "closer"),
+        ("finish up directly left of the vase", "closer"),
+        ("park immediately in front of the vase", "closer"),
     ],
 )
 def test_closeness_is_read_alike_everywhere(words: str, relation: str) -> None:

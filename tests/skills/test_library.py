@@ -62,6 +62,15 @@ def test_shift_moves_the_path_and_keeps_the_start(direction: str, axis: int, sig
     assert displacement_is_smooth(t, out)
 
 
+def test_an_alternating_shift_flips_every_block_and_eases_each_flip() -> None:
+    t = curve(12)
+    out = shape.shift(t, "up", 0.2, alternate=4)
+    moved = out[:, 2] - t[:, 2]
+    assert np.allclose(moved / 0.2, [1, 1, 1, 0.5, -0.5, -1, -1, -0.5, 0.5, 1, 1, 1])
+    assert np.allclose(out[:, :2], t[:, :2]) and np.array_equal(out[:, 3], t[:, 3])
+    assert np.abs(np.diff(moved)).max() <= 0.2 + 1e-12  # no step jumps the whole double offset
+
+
 def test_axis_convention_flips_left_and_right() -> None:
     ovita = Axes.from_positive_x("right")
     out = shape.shift(curve(), "left", 0.2, axes=ovita)

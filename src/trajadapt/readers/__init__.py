@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
@@ -25,6 +26,7 @@ from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
+from trajadapt.readers.scaled_distances import scale_distances
 from trajadapt.readers.speed_scope import localize_speed
 from trajadapt.readers.stated_amounts import use_stated_amounts
 from trajadapt.readers.unasked_directions import replace_unasked_shifts
@@ -57,6 +59,7 @@ READERS: tuple[Reader, ...] = (
            lambda code, asked, _: leave_out_repeats(code, asked)),
     Reader("unasked-steps", "steps of a topic the words never mention", leave_out_unasked),
     Reader("unnamed-objects", "steps about an object the words never name", leave_out_unnamed),
+    Reader("scaled-distances", "a distance from an object the words multiply", scale_distances),
     Reader("unstated-amounts", "amounts the words never give",
            lambda code, asked, _: replace_unstated_amounts(code, asked)),
     Reader("asked-directions", "a direction a clause asks and no step makes",
@@ -75,6 +78,8 @@ READERS: tuple[Reader, ...] = (
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("part-scope", "the part of the path a clause moves",
            lambda code, asked, _: scope_to_parts(code, asked)),
+    Reader("alternating-shifts", "shifts the words ask to alternate in blocks of waypoints",
+           lambda code, asked, _: alternate_shifts(code, asked)),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""

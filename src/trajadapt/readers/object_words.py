@@ -57,7 +57,7 @@ def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
 
 def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     side = _side(without_names(clause, [name]))
-    if side:
+    if side and not CLOSER.search(clause):  # "just right of the bed" asks to come close on that side
         return ObjectAsk(name, "side", clause, side=side)
     if asks_pace(clause):
         if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):

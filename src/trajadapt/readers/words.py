@@ -94,7 +94,9 @@ pace", "at a lower speed")."""
 
 GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(
-    r"\b(?:closer|nearer|approach\w*|toward[s]?|hug\w*"
+    r"\b(?:closer|nearer|approach\w*|toward[s]?|hug\w*|tight(?:er|ly)?\s+(?:to|by|against|past)"
+    r"|in\s+(?:\w+\s+)?tight|right next to|(?:immediate(?:ly)?|just|directly)\s+(?:to\s+|in\s+)?(?:the\s+)?"
+    r"(?:left|right|front|back|behind)(?:\s+side)?\s+of"
     r"|(?:smaller|shorter|less(?:er)?|reduced?|tighter|narrower) (?:distance|gap|berth|clearance|margin))\b"
     rf"|\b(?:reduc|decreas|lower|cut|shrink|shrank|shrunk|narrow|lessen|tighten|clos(?:e|es|ed|ing))\w*\s+{GAP_NOUN}",
     re.I,
@@ -106,10 +108,10 @@ AWAY = re.compile(
     rf"|\b(?:increas|widen|grow|grew|enlarg|expand|extend|doubl|rais|boost)\w*\s+{GAP_NOUN}",
     re.I,
 )
-"""What asks to come closer to an object, and to keep further from it ("steer clear of", "a wider
-margin", a verb of less or more before a distance: "reduce the gap", "widen your clearance";
-"avoid" asks a clearance, which the readers leave to ``avoid``; only the effect's flags count it as
-away)."""
+"""What asks to come closer to an object, and to keep further from it ("tighter to", "in tight",
+"just right of", "right next to", "steer clear of", "a wider margin", a verb of less or more before
+a distance: "reduce the gap", "widen your clearance"; "avoid" asks a clearance, which the readers
+leave to ``avoid``; only the effect's flags count it as away)."""
 
 
 def whole_words(text: str) -> str:

@@ -31,7 +31,12 @@ BLEND_IN = 0.15  # fraction of the path over which a shift is blended in (latte-
 
 
 def shift(
-    trajectory: TrajectoryArg, direction: DirectionArg, amount: DistanceArg = None, *, axes: Axes = PAPER_AXES
+    trajectory: TrajectoryArg,
+    direction: DirectionArg,
+    amount: DistanceArg = None,
+    *,
+    axes: Axes = PAPER_AXES,
+    alternate: int = 0,
 ) -> Array:
     """Move the path in a direction by amount, keeping the start (blended in over the first 15%).
 
@@ -40,11 +45,32 @@ def shift(
         direction: 'left', 'right', 'front', 'back', 'up', 'down' (or 'higher', 'top', 'bottom', ...).
         amount: a distance, or a word ('slightly', 'a bit', 'a lot'); default 15% of the path's size.
         axes: the axis convention (bound by the sandbox).
+        alternate: N > 0 flips the direction every N waypoints from the first one, start included
+            ("the first 10 points left, the next 10 right, and so on"); set by a reader, not shown
+            in the prompt.
     """
     t = as_trajectory(trajectory)
     offset = axes.vector(direction) * resolve_amount(amount, t)
+    if alternate > 0:
+        t[:, :3] += alternating_signs(len(t), int(alternate))[:, None] * offset
+        return t
     t[:, :3] += smoothstep(progress(t) / BLEND_IN)[:, None] * offset
     return t
+
+
+def alternating_signs(count: int, block: int) -> Array:
+    """+1 for the first ``block`` of ``count`` waypoints, -1 for the next, and so on.
+
+    The two waypoints on either side of a flip take half their sign, so the path crosses over in
+    three steps (a half, a whole, a half of the double offset) instead of jumping in one.
+    """
+    index = np.arange(count)
+    signs = np.where((index // block) % 2 == 0, 1.0, -1.0)
+    eased = signs.copy()
+    for edge in range(block, count, block):
+        eased[edge - 1] = 0.5 * signs[edge - 1]
+        eased[edge] = 0.5 * signs[edge]
+    return eased
 
 
 def shift_goal(

@@ -103,6 +103,11 @@ def test_unclear_asks_are_left_out(words: str) -> None:
             "walk a lot further from the sofa",
             ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
         ),
+        (
+            "t = circle_around(t, detect_objects('sofa'))",
+            "ease off all around the sofa",
+            ["t = scale_speed(t, 0.65, near=detect_objects('sofa'))"],
+        ),  # "around" placed a pace; no word asks to go round
     ],
 )
 def test_a_step_that_does_something_else_is_replaced_with_a_note(
@@ -123,6 +128,7 @@ def test_a_step_that_does_something_else_is_replaced_with_a_note(
         ("t = move_away(t, detect_objects('sofa'))", "walk further from the sofa"),  # already right
         ("t = avoid(t, detect_objects('lamp'), 0.2)\nt = scale_speed(t, 0.5)", "go slower near the lamp"),
         ("t = shift(t, 'left')", "go slower near the lamp"),  # no step on the object to replace
+        ("t = circle_around(t, detect_objects('sofa'))", "loop around the sofa, slowing as you go round it"),
         ("t = keep_side(t, 'left', detect_objects('sofa'))", "stay left of the sofa"),  # names it
         (
             "t = pass_through(t, midpoint(detect_objects('sofa'), detect_objects('lamp')))",

@@ -21,6 +21,7 @@ from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
+from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
@@ -80,6 +81,8 @@ READERS: tuple[Reader, ...] = (
            lambda code, asked, _: scope_to_parts(code, asked)),
     Reader("alternating-shifts", "shifts the words ask to alternate in blocks of waypoints",
            lambda code, asked, _: alternate_shifts(code, asked)),
+    Reader("curve-asks", "a step that bends the path the other way from the words",
+           lambda code, asked, _: bend_as_asked(code, asked)),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""

@@ -8,9 +8,10 @@ detect_objects('bottle'), 0.5)`` for "do not go left of the bottle". Each clause
 the scene's objects asks one thing of it:
 
 - a speed change near it ("slower", "faster", ... with a place word: "near", "within 0.2 of", "if
-  X is within"), when the code changes no speed anywhere: the one distance step on that object
-  becomes ``scale_speed(t, <calibrated factor>, near=X)`` (with ``radius=`` when the clause says
-  "within <number>"); in an ``avoid`` of several objects, the object leaves the list and the speed
+  X is within", "around"), when the code changes no speed anywhere: the one distance step on that
+  object (or ``circle_around`` it, when no word asks to go round: "speed up around X") becomes
+  ``scale_speed(t, <calibrated factor>, near=X)`` (with ``radius=`` when the clause says "within
+  <number>"); in an ``avoid`` of several objects, the object leaves the list and the speed
   step follows it;
 - a side ("do not go left of X" -> the right side, "stay to the right of X") -> ``keep_side``;
 - closer ("closer", "nearer", "a smaller distance", "approach") or away ("further", "away", "a
@@ -57,6 +58,20 @@ from trajadapt.readers.words import (
     stated_numbers,
 )
 
+CIRCLING = re.compile(
+    r"\b(?:circl\w*|encircl\w*|revolv\w*|orbit\w*|loop\w*|spin\w*|full\s+(?:turn|circle)"
+    r"|go(?:es|ing)?\s+(?:all\s+the\s+way\s+)?round)\b",
+    re.I,
+)
+"""Words that ask to go round an object; without them, "speed up around X" places a speed."""
+
+
+def _steps_for_place(ask: ObjectAsk, words: str) -> tuple[str, ...]:
+    """The steps on an object that may stand where the clause asks something of it."""
+    if ask.relation in ("faster", "slower") and not CIRCLING.search(words):
+        return (*DISTANCE_STEPS, "circle_around")
+    return DISTANCE_STEPS
+
 
 def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with each step on an object that does not do what the words ask of it replaced, noted."""
@@ -67,7 +82,8 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     for ask in asks.values():
         if ask.relation in ("faster", "slower") and changes_speed:
             continue
-        steps = [i for i, line in enumerate(lines) if on_object(call_of(line, DISTANCE_STEPS), ask.name)]
+        written = _steps_for_place(ask, words)
+        steps = [i for i, line in enumerate(lines) if on_object(call_of(line, written), ask.name)]
         if len(steps) != 1 or (ask.relation == "side" and any(call_of(x, ("keep_side",)) for x in lines)):
             continue
         replaced = _replacement(lines[steps[0]], ask)

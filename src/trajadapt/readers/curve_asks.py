@@ -1,0 +1,61 @@
+"""A step that bends the path the other way from what the words ask: more curve, or less.
+
+"Make the trajectory more curved" and "make the path curve more" came back as ``smooth(t, 0.8)``,
+which takes bends out; the skill that puts more in is ``exaggerate_curve``. The words ask more
+curve when they put a word of more before a word of bending ("more curved", "increase the
+curvature", "exaggerate the bends", "a wider arc") or after it ("curve more", "bend it more"), and
+less when they ask it straight ("straighten", "flatten the curve", "less curved", "fewer bends").
+When they ask one and not the other, a step that does the other is replaced: ``smooth`` by
+``exaggerate_curve(t)`` for more, ``exaggerate_curve`` by ``smooth(t)`` for less ("smoothly" says
+how, and asks neither). Code that is not made of skill calls alone is left alone. A review note
+says what changed and why.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+
+from trajadapt.code_parse import called_name, in_place_of, skill_program
+from trajadapt.skills import SKILL_NAMES
+
+_BENDING = r"(?:curv\w*|bend\w*|arc\w*)"
+MORE_CURVE = re.compile(
+    rf"\b(?:more|increas\w*|exaggerat\w*|amplif\w*|accentuat\w*|sharpen\w*|deepen\w*|bigger|larger|stronger|deeper|sharper"
+    rf"|wider)\s+(?:\w+\s+){{0,2}}?{_BENDING}"
+    rf"|\b{_BENDING}\s+(?:\w+\s+){{0,3}}?(?:more|wider|deeper|sharper|stronger)\b|\bcurvier\b",
+    re.I,
+)
+"""Words that ask the path to bend more."""
+LESS_CURVE = re.compile(
+    rf"\b(?:straighten\w*|straighter|(?:make|keep)\w*\s+(?:\w+\s+){{0,2}}?straight|flatten\w*|less\s+{_BENDING}|fewer\s+{_BENDING}|(?:reduc|decreas)\w*\s+(?:the\s+)?{_BENDING}"
+    rf"|{_BENDING}\s+(?:\w+\s+){{0,2}}?less\b)",
+    re.I,
+)
+"""Words that ask the path to bend less."""
+OPPOSITE = {"more": ("smooth", "exaggerate_curve(t)"), "less": ("exaggerate_curve", "smooth(t)")}
+"""For each ask, the step that does the other (replaced) and the step that does it."""
+
+
+def asked_curve(words: str) -> str | None:
+    """'more' or 'less' when the words ask the path to bend more or less (and not both), else None."""
+    more, less = bool(MORE_CURVE.search(words)), bool(LESS_CURVE.search(words))
+    return None if more == less else "more" if more else "less"
+
+
+def bend_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with each step that bends the path the other way replaced (see the module)."""
+    lines = code.splitlines()
+    program = skill_program(lines, SKILL_NAMES)
+    ask = asked_curve(" ".join(asked))
+    if program is None or ask is None:
+        return code, []
+    wrong, right = OPPOSITE[ask]
+    variable = program[1]
+    step = f"{variable} = {right.replace('(t', f'({variable}', 1)}"
+    notes: list[str] = []
+    for index, line in enumerate(lines):
+        if called_name(line) == wrong:
+            notes.append(f"`{line.strip()}` -> `{step}`: the words ask the path to bend {ask}")
+            lines[index] = in_place_of(line, step)
+    return ("\n".join(lines), notes) if notes else (code, [])

@@ -1,0 +1,48 @@
+"""A step that bends the path the other way from what the words ask (readers.curve_asks).
+
+Phrasings written for the reader; none of the benchmark sets has them.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers.curve_asks import asked_curve, bend_as_asked
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "asked"),
+    [
+        ("exaggerate the bends of the route", "more"),
+        ("give it a deeper arc", "more"),
+        ("let the path bend quite a bit more", "more"),
+        ("flatten the curve a little", "less"),
+        ("take the bends out, make the route straight", "less"),
+        ("curve it less near the goal", "less"),
+        ("go straight to the vase", None),  # "straight" here is "directly"
+        ("extend the path smoothly", None),  # "smoothly" says how
+        ("bend more but straighten the end", None),  # both: unclear
+    ],
+)  # fmt: skip
+def test_more_or_less_curve(words: str, asked: str | None) -> None:
+    assert asked_curve(words) == asked
+
+
+def test_smoothing_for_more_curve_becomes_the_exaggeration() -> None:
+    code, notes = bend_as_asked(program("t = smooth(t, 0.8)", "t = scale_speed(t, 0.9)"), ["curve it more"])
+    assert code == program("t = exaggerate_curve(t)", "t = scale_speed(t, 0.9)")
+    assert "bend more" in notes[0]
+
+
+def test_exaggeration_for_a_straighter_path_becomes_smoothing() -> None:
+    code, _ = bend_as_asked(program("t = exaggerate_curve(t, 2.0)"), ["make it straighter"])
+    assert code == program("t = smooth(t)")
+
+
+def test_a_step_that_agrees_stays() -> None:
+    code = program("t = exaggerate_curve(t, 1.5)")
+    assert bend_as_asked(code, ["more curved please"]) == (code, [])

@@ -98,3 +98,25 @@ def test_shifts_nobody_asked_give_way_to_the_pause() -> None:
 def test_a_pause_that_points_back_takes_the_place_before() -> None:
     found = asked_pauses("when you reach the vase, remain still there for 7 steps", NAMES)
     assert [(p.place, p.steps, p.is_object) for p in found] == [("vase", 7, True)]
+
+
+def test_a_stop_that_only_begins_a_pause_leaves_beside_the_wait() -> None:
+    code, notes = add_asked_pauses(
+        program("t = stop_at(t, t[-2])", "t = wait(t, 'middle', 3)"),
+        ["at the midpoint, halt and then linger there for 3 steps"],
+        NAMES,
+    )
+    assert code == program("t = wait(t, 'middle', 3)")
+    assert "only to pause" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "come to a stop at the end, and wait 3 timesteps by the vase",  # a stop of its own
+        "halt near the cup",  # no pause with a count
+    ],
+)
+def test_a_stop_of_its_own_stays(words: str) -> None:
+    code = program("t = stop_at(t, detect_objects('cup'))", "t = wait(t, detect_objects('vase'), 3)")
+    assert add_asked_pauses(code, [words], NAMES) == (code, [])

@@ -41,6 +41,7 @@ def test_each_request_is_a_clause(words, clauses):
         "stay well clear of the lamp, a lot further",
         "arc over the middle, bulging upwards",
         "move 0.5 to the left and 0.3 up",
+        "make the point between the chair and the table your new end",  # a pair, then its request
     ],
 )
 def test_what_only_names_or_qualifies_stays_in_its_clause(words):

@@ -34,7 +34,7 @@ def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(
         ("t = shift(t, 'down')", "go down and further from the lamp"),  # the words say down
         ("t = shift(t, 'up')\nt = shift(t, 'right')", "go left, further from the lamp"),  # which guesses?
         ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "go up, further from the lamp"),
-        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4, part='end')", "faster at the end"),  # a part is named
+        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "move the end part and go faster"),  # a part moved
         ("t = shift(t, 'up')", "make the path smoother"),  # nothing else asked
     ],
 )
@@ -74,6 +74,8 @@ def test_paces_near_two_objects_leave_the_shift_alone() -> None:
     [
         ("t = shift(t, 'up')\nt = move_away(t, detect_objects('lamp'))", "further from the lamp"),
         ("t = shift(t, 'up')\nt = scale_speed(t, 1.4)", "go faster"),
+        ("t = shift(t, 'up')\nt = scale_speed(t, 1.4, part='end')", "faster at the end"),  # a part, no move
+        ("t = shift(t, 'left')\nt = wait(t, 'middle', 4)", "halfway along, hold still for 4 timesteps"),
         ("t = scale_speed(t, 0.45)\nt = shift(t, 'down', 'a bit')\nt = move_away(t, detect_objects('sofa'))",
          "reduce the speed a lot and keep more room from the sofa"),
     ],

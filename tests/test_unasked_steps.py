@@ -22,6 +22,7 @@ CODE = "t = get_trajectory()\nt = move_away(t, detect_objects('sandal'), 'a lot'
         ("keep a bigger distance from the sandal", "t = wait(t, 'goal', 5)"),
         ("go to the left", "t = spiral(t)"),
         ("stay on the top", "t = add_noise(t)"),
+        ("away from the sandal, easing off once every 5 waypoints", "t = resample(t, 5)"),  # how often
     ],
 )
 def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: str) -> None:
@@ -34,6 +35,7 @@ def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: s
     ("instruction", "step"),
     [
         ("walk slower near the sandal", "t = scale_speed(t, 0.5, near=detect_objects('sandal'))"),
+        ("cruise at a steady 0.3 the whole way", "t = set_speed(t, 0.3)"),  # a speed said as a number
         ("go past the goal by 0.2", "t = extend(t, 0.2)"),
         ("after reaching the goal go straight to the door", "t = append_segment(t, detect_objects('door'))"),
         ("pause 5 timesteps at the end", "t = wait(t, 'goal', 5)"),

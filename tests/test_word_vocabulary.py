@@ -25,6 +25,11 @@ from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_direction
         ("dip under the shelf", "down"),
         ("dropping the route by 0.3", "down"),
         ("with the curve lowered near the end", "down"),
+        # more or less of a height (session 20)
+        ("pick up some extra elevation", "up"),
+        ("fly with more altitude over the crate", "up"),
+        ("shed a little height near the goal", "down"),
+        ("decrease the elevation of the route", "down"),
     ],
 )
 def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> None:
@@ -40,6 +45,8 @@ def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> Non
         "lift the velocity",
         "lower the clearance to the lamp",  # a distance: closer, not down
         "raise your margin around the lamp",
+        "keep the same height the whole way",
+        "at a height of 0.5",
     ],
 )
 def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> None:

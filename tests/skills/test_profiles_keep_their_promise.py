@@ -35,6 +35,17 @@ def test_decelerating_slows_every_waypoint_of_its_part_by_the_ramp_and_never_ris
     assert np.all(np.diff(after[part, 3]) <= 1e-12)
 
 
+@settings(max_examples=100, deadline=None)
+@given(speeds, st.integers(0, 50), st.floats(0.0, 0.6))
+def test_decelerating_past_a_rest_still_moves_and_stops_at_the_goal(values, rest, start):
+    values = list(values) + [1.0, 1.0]
+    values[rest % (len(values) - 2)] = 0.0  # at rest somewhere before the goal
+    before = path(values)
+    after = speed_profile(before, "decelerate", start=start)
+    assert np.all(after[:, 3] <= before[:, 3] + 1e-12) and after[-1, 3] == 0.0
+    assert after[:-1, 3].max() > 0.0  # not held at 0 from the rest on
+
+
 def test_decelerating_a_path_that_already_slows_to_the_goal_slows_it_further():
     slowing = path(list(np.linspace(1.0, 0.0, 40)))  # already the old uniform ramp
     tail = slowing[:, 0] >= 0.7

@@ -44,6 +44,8 @@ SOME_TIME = re.compile(
     re.I,
 )
 """A pause's length said without a count: "for a while", "for some time", "briefly"."""
+STOPPING = re.compile(r"\b(?:stop\w*|halt\w*|standstill|terminat\w*|come\s+to\s+rest)\b", re.I)
+"""Words that may ask the path to end where it stops."""
 SOME_TIME_STEPS = 10
 """The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)
@@ -62,6 +64,7 @@ class AskedPause:
     steps: int
     is_object: bool
     clause: str
+    opened_by: str = ""  # the clause before it that began the pause with no count ("stop")
 
 
 def asked_pauses(words: str, names: Iterable[str]) -> list[AskedPause]:
@@ -70,27 +73,52 @@ def asked_pauses(words: str, names: Iterable[str]) -> list[AskedPause]:
     found: list[AskedPause] = []
     previous: tuple[str, bool] | None = None
     carries = False  # the clause before sets the place of this one
+    opening = ""  # the clause before, when it began a pause and gave no count
     for clause in split_clauses(words, names):
         place = _place(clause, names)
-        if place is None and (carries or POINTING_BACK.search(clause)):
+        carried = place is None and bool(carries or POINTING_BACK.search(clause))
+        if carried:
             place = previous
         count = _count(clause)
         pauses = bool(PAUSE_WORDS.search(clause))
         if pauses and count and place is not None:
-            found.append(AskedPause(place[0], count, place[1], clause))
+            found.append(AskedPause(place[0], count, place[1], clause, opening if carried else ""))
         previous, carries = place, bool(LEAD_IN.search(clause)) or (pauses and not count)
+        opening = clause if pauses and not count else ""
     return found
 
 
 def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
-    """``code`` with a ``wait`` for each pause the words ask and no step makes, and a note each."""
+    """``code`` with a ``wait`` for each pause the words ask and no step makes, and a note each.
+
+    Where every word for stopping belongs to a pause ("halfway, stop and wait for 5 timesteps"), a
+    ``stop_at`` left beside the ``wait`` (which ends the path there) serves no clause and leaves.
+    """
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
-    if program is None or any(called_name(line) == "wait" for line in lines):
+    if program is None:
         return code, []
-    variable = program[1]
+    words = " ".join(asked)
+    pauses = asked_pauses(words, names)
     notes: list[str] = []
-    for pause in asked_pauses(" ".join(asked), names):
+    if not any(called_name(line) == "wait" for line in lines):
+        _add_waits(lines, notes, pauses, program[1])
+    if pauses and not _stops_for_good(words, names, pauses):
+        for line in [x for x in lines if called_name(x) == "stop_at"]:
+            lines.remove(line)
+            notes.append(f"left out `{line.strip()}`: the words stop only to pause, and the path goes on")
+    return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _stops_for_good(words: str, names: Iterable[str], pauses: list[AskedPause]) -> bool:
+    """Whether a clause asks to stop (end the path) that is not part of one of the pauses."""
+    pausing = {clause for pause in pauses for clause in (pause.clause, pause.opened_by)}
+    return any(STOPPING.search(c) and c not in pausing for c in split_clauses(words, list(names)))
+
+
+def _add_waits(lines: list[str], notes: list[str], pauses: list[AskedPause], variable: str) -> None:
+    """A ``wait`` for each pause (a ``stop_at`` at its place becomes it), added to ``lines``."""
+    for pause in pauses:
         where = f"detect_objects({pause.place!r})" if pause.is_object else repr(pause.place)
         step = f"{variable} = wait({variable}, {where}, {pause.steps})"
         said = pause.clause.strip()
@@ -101,7 +129,6 @@ def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> t
             continue
         lines.insert(after_last_step(lines, SKILL_NAMES), step)
         notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
-    return ("\n".join(lines), notes) if notes else (code, [])
 
 
 def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:

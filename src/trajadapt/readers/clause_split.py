@@ -155,12 +155,30 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return not _only_a_place(piece, names)
     if joiner.strip() not in ("", ",", "and", "but", "also"):
         return True  # a sentence mark, "then"
+    if joiner.strip() == "and" and _second_of_a_pair(previous, piece, names):
+        return False  # "the midpoint between the heron *and the spaniel* ..."
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
         return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
     if participle and joiner.strip() == ",":
         return bool(asked_kinds(piece) - asked_kinds(previous)) or _asks_more(piece, previous, names)
     return _asks_something(piece, names)
+
+
+PAIRING = re.compile(r"\b(?:between|of)\s+(?:the\s+)?[\w\s-]+$", re.I)
+"""A piece that ends with the first of a pair of objects: "between the heron", "the midpoint of X"."""
+
+
+def _second_of_a_pair(previous: str, piece: str, names: Sequence[str]) -> bool:
+    """Whether ``previous`` ends "between <object>" and ``piece`` begins with the second object."""
+    ending = PAIRING.search(previous)
+    if ending is None or not names_in(ending.group(0), names):
+        return False
+    start = whole_words(piece)
+    return any(
+        start.startswith(spoken) or start.startswith(f" the{spoken}")
+        for spoken in (whole_words(name) for name in names if name.strip())
+    )
 
 
 MOVING = frozenset(

@@ -29,6 +29,7 @@ Measured on stored answers in docs/benchmarks.md.
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import (
@@ -55,6 +56,12 @@ from trajadapt.readers.words import (
 )
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
+MOVING = re.compile(
+    r"\b(?:mov\w*|shift\w*|offset\w*|displac\w*|push\w*|pull\w*|nudg\w*|translat\w*|relocat\w*"
+    r"|bring\w*|brought|put\w*|plac\w*|set|sets|lift\w*|rais\w*|lower\w*|drop\w*|tilt\w*|bend\w*)\b",
+    re.I,
+)
+"""Verbs that move something: with a part of the path named, a shift may be what they ask of it."""
 
 
 def replace_unasked_shifts(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
@@ -123,11 +130,13 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
 def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[list[str], list[str]]:
     """The code without the shift at ``index`` when the other steps make all the words ask.
 
-    That is when the words name no direction and no part or end of the path, and another step
-    changes the path or its pace: the shift serves no clause (a guess copied from an example).
+    That is when the words name no direction and move no part or end of the path (a part named
+    for a pause or a pace, "halfway, stop and wait", moves nothing), and another step changes the
+    path or its pace: the shift serves no clause (a guess copied from an example).
     """
     steps = [i for i, line in enumerate(lines) if called_name(line) not in (None, "get_trajectory")]
-    if said_directions(words) or PART_OR_END.search(words) or steps == [index]:
+    moves_a_part = PART_OR_END.search(words) and MOVING.search(words)
+    if said_directions(words) or moves_a_part or steps == [index]:
         return lines, []
     before = lines[index].strip()
     note = f"left out `{before}`: the instruction names no direction, and the other steps make what it asks"

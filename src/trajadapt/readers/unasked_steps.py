@@ -61,6 +61,8 @@ TOPICS = (
             "dash",
             "gentl",
             "careful",
+            "steady",
+            "cruis",
         ),
         also=asks_pace,  # "ease off", "take it easy", "reduce your speed": the readers' one vocabulary
     ),  # fmt: skip
@@ -168,11 +170,20 @@ MULTIPLIER = re.compile(
     r"\b(?:\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|many)\s+times\b", re.I
 )
 """A count of times ("by two times", "3 times further"): how much, not the "time" of a speed."""
+PERIOD = re.compile(
+    r"\b(?:every|each|per|once\s+(?:per|every))\s+(?:block\s+of\s+)?(?:\d+|two|three|four|five|six|seven|eight"
+    r"|nine|ten|few)\s+(?:way)?points?\b",
+    re.I,
+)
+"""How often along the path ("every 4 waypoints"): where a change repeats, not a number of waypoints."""
 
 
 def asks_for(topic: Topic, words: str) -> bool:
-    """Whether ``words`` contain a stem of ``topic`` at the start of a word ("two times" is no time)."""
-    lowered = MULTIPLIER.sub(" ", words.lower())
+    """Whether ``words`` contain a stem of ``topic`` at the start of a word.
+
+    "Two times" is no time, and "every 4 waypoints" asks no number of waypoints.
+    """
+    lowered = PERIOD.sub(" ", MULTIPLIER.sub(" ", words.lower()))
     if topic.also is not None and topic.also(words):
         return True
     return any(re.search(r"\b" + re.escape(stem), lowered) for stem in topic.stems)

@@ -136,6 +136,15 @@ OF_DISTANCE = re.compile(rf"\b[a-z]+\s+{GAP_NOUN}", re.I)
 (``CLOSER``, ``AWAY``), not down or up."""
 
 
+_HEIGHT_NOUN = r"(?:\w+\s+){0,3}?(?:altitude|height|elevation)\b"
+MORE_HEIGHT = re.compile(
+    rf"\b(?:gain\w*|greater|more|increas\w*|add\w*|extra|bigger|larger)\s+{_HEIGHT_NOUN}", re.I
+)
+LESS_HEIGHT = re.compile(
+    rf"\b(?:los(?:e|es|ing)|lost|less|reduc\w*|decreas\w*|shed\w*|smaller)\s+{_HEIGHT_NOUN}", re.I
+)
+"""More or less of a height: a direction said with a noun ("gain a bit of altitude", "less height")."""
+
 DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 """Every word that names a direction, to its canonical direction."""
 
@@ -168,9 +177,11 @@ def said_directions(words: str) -> set[str]:
 
     A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
     (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
-    ``OF_DISTANCE``).
+    ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
+    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``).
     """
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
+    text = LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text))
     return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 

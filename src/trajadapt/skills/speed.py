@@ -101,11 +101,15 @@ def speed_profile(
     fraction start of the path on; peak defaults to the current top speed. Decelerating never makes a
     waypoint faster than it was, accelerating never slower; accelerating a path already at its top
     speed goes up to the phrase table's "faster" factor of it, and decelerating a path that already
-    slows scales its own speeds down by the same uniform ramp, never rising.
+    slows scales its own speeds down by the same uniform ramp, never rising. A path at rest on the
+    way (at its start, or a stop) decelerates from its fastest waypoint after its last rest, so that
+    it still moves and comes to a stop at the goal.
     """
     t = as_trajectory(trajectory)
     s = progress(t)
     begin = float(np.clip(start, 0.0, 0.99))
+    if str(kind).strip().lower() == "decelerate":
+        begin = _after_the_last_rest(t, s, begin)
     local = np.clip((s - begin) / (1.0 - begin), 0.0, 1.0)
     entry = float(np.interp(begin, s, t[:, 3]))
     top = float(peak) if peak is not None else float(t[:, 3].max())
@@ -128,3 +132,19 @@ def speed_profile(
         speeds = np.maximum(speeds, t[after, 3])
     t[after, 3] = speeds
     return t
+
+
+def _after_the_last_rest(t: Array, s: Array, begin: float) -> float:
+    """Where a slowing from ``begin`` starts: after the path's last rest before its goal, if any.
+
+    A path at rest at ``begin`` or after it (its start, or a stop on the way) would be held at 0 from
+    there on by a slowing that never rises: the slowing starts instead at the fastest waypoint after
+    that last rest, so the path still moves and comes to a stop at the goal.
+    """
+    resting = np.flatnonzero((s >= begin) & (t[:, 3] <= 1e-9))
+    resting = resting[resting < len(t) - 1]
+    if not len(resting):
+        return begin
+    after = np.arange(resting[-1], len(t) - 1)
+    fastest = after[int(np.argmax(t[after, 3]))]
+    return float(min(s[fastest], 0.99))

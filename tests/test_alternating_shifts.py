@@ -22,6 +22,7 @@ def program(*steps: str) -> str:
         ("alternate front and back every 8 points", ("front", 8)),
         ("switch sides in groups of 12: right, then left, then right again", ("right", 12)),
         ("points 1-6 go left, 7-12 go right, back and forth to the end", ("left", 6)),
+        ("lower the first 4 points, raise the next 4, and repeat the pattern", ("down", 4)),
     ],
 )  # fmt: skip
 def test_alternating_shifts_their_first_direction_and_block(words: str, asked: tuple[str, int]) -> None:

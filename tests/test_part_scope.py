@@ -61,6 +61,11 @@ def test_a_whole_path_shift_becomes_a_shift_of_the_start_and_keeps_its_amount() 
         ("t = move_away(t, detect_objects('goal'))", "continue further past the goal", "t = extend(t)"),
         ("t = move_away(t, detect_objects('goal'), 'a bit')", "the goal point a little lower", "t = shift_goal(t, 'down', 'a little')"),
         ("t = shift(t, 'down')", "the first 4 waypoints go lower", "t = shift_part(t, 'down', part=(0, 4))"),
+        ("t = shift_goal(t, 'up', 0.3)", "hoist everything up 0.3, a bit nearer the box", "t = shift(t, 'up', 0.3)"),
+        ("t = shift_start(t, 'left')", "bear left", "t = shift(t, 'left')"),  # no part named: all of it
+        ("t = shift_part(t, 'up', part='end')", "head for the upper region", "t = shift(t, 'up')"),
+        ("t = shift_part(t, 'down', 0.1, part='end')", "sink into the lower part by 0.1", "t = shift(t, 'down', 0.1)"),
+        ("t = move_closer(t, detect_objects('goal'))", "once at the goal, keep moving for another 0.4", "t = extend(t, 0.4)"),
     ],
 )  # fmt: skip
 def test_the_step_written_for_the_part_is_replaced(step: str, words: str, expected: str) -> None:
@@ -94,6 +99,7 @@ def test_steps_that_already_do_it_or_are_ambiguous_stay(step: str, words: str) -
         "the new goal is halfway between the lamp and the box",
         "finish at the lamp",
         "the goal should be the lamp",
+        "take the lamp as the new destination, arriving there smoothly",  # named before "new"
     ],
 )
 def test_a_new_goal_makes_the_path_end_at_the_point_instead_of_passing_it(words: str) -> None:

@@ -28,6 +28,7 @@ from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
 from trajadapt.readers.scaled_distances import scale_distances
+from trajadapt.readers.speed_profiles import profile_paces
 from trajadapt.readers.speed_scope import localize_speed
 from trajadapt.readers.stated_amounts import use_stated_amounts
 from trajadapt.readers.unasked_directions import replace_unasked_shifts
@@ -84,6 +85,8 @@ READERS: tuple[Reader, ...] = (
     Reader("curve-asks", "a step that bends the path the other way from the words",
            lambda code, asked, _: bend_as_asked(code, asked)),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
+    Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
+           profile_paces),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""
 

@@ -8,12 +8,12 @@ on the first 10 waypoints. The skill that makes the wave is ``shift(t, 'left', 0
 (a keyword the prompt does not show).
 
 The words ask it when they say that the shifts go on alternating ("alternate", "alternating",
-"and so on", "back and forth", "every other"), give a block of waypoints ("blocks of 10", "the
-first 10 points", "the next ten waypoints", "waypoints 1-10", "every 10 points") and say two
-opposite directions (left and right, up and down, front and back). When the code shifts the path
-(``shift`` or ``shift_part``) in those directions, those steps become the one alternating shift, in
-the direction the words say first, with the first such step's amount. Code that is not made of
-skill calls alone is left alone. A review note says what changed and why.
+"and so on", "back and forth", "every other", "continue like this"), give a block of waypoints
+("blocks of 10", "the first 10 points", "the next ten waypoints", "waypoints 1-10", "every 10
+points") and say two opposite directions (left and right, up and down, front and back). When the
+code shifts the path (``shift`` or ``shift_part``) in those directions, those steps become the one
+alternating shift, in the direction the words say first, with the first such step's amount. Code
+that is not made of skill calls alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -28,9 +28,13 @@ from trajadapt.readers.words import DIRECTION_WORDS, whole_count
 from trajadapt.skills import SKILL_NAMES
 
 ALTERNATION = re.compile(
-    r"\b(?:alternat\w*|and so on|and so forth|back and forth|every other|switch\w* (?:back|sides?))\b", re.I
+    r"\b(?:alternat\w*|and so on|and so forth|back and forth|every other|switch\w* (?:back|sides?)"
+    r"|(?:continu\w*|keep\w* (?:going|on)|carry\w* on|repeat\w*)\s+"
+    r"(?:like\s+(?:this|that)|(?:in\s+)?(?:this|that|the\s+same)\s+(?:way|pattern|manner)|the\s+pattern))\b",
+    re.I,
 )
-"""Words that say the shifts go on alternating."""
+"""Words that say the shifts go on alternating ("and so on", "continue like this", "repeat the
+pattern")."""
 BLOCK = re.compile(
     r"\b(?:(?:blocks?|groups?|sets?|chunks?|batch(?:es)?|runs?|stretch(?:es)?)\s+of\s+(\w+)"
     r"|(?:first|next|following)\s+(\w+)\s+(?:way)?points?"

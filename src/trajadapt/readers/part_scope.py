@@ -48,6 +48,7 @@ from trajadapt.readers.words import (
     AWAY,
     CLOSER,
     NUMBER_TEXT,
+    PART_OR_END,
     PAST_THE_GOAL,
     SPEED_WORDS,
     directed_numbers,
@@ -80,10 +81,21 @@ REFERENCE = re.compile(
 FIRST_COUNT = re.compile(r"\b(?:first|initial|opening|leading)\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
 """The first N waypoints, in the words for the first ones ("the initial 6 points")."""
 KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
-FURTHER = re.compile(r"\b(?:further|farther|more|continu\w*|go(?:es|ing)? on|keep going|onward\w*)\b", re.I)
-AMOUNT_NUMBER = re.compile(rf"\b(?:by|for|of)\s+({NUMBER_TEXT})\b", re.I)
+FURTHER = re.compile(
+    r"\b(?:further|farther|more|another|additional|extra|continu\w*|go(?:es|ing)? on|keep (?:going|moving|on)"
+    r"|carry on|onward\w*)\b",
+    re.I,
+)
+AMOUNT_NUMBER = re.compile(
+    rf"\b(?:by|for|of)\s+(?:another\s+|an?\s+(?:extra|additional|further)\s+)?({NUMBER_TEXT})\b", re.I
+)
 
 SHIFTS = ("shift", "shift_goal")
+REGION = re.compile(
+    r"\b(?:top|bottom|upper|lower|left|right|front|back|rear|far|near)(?:most)?\s+(?:part|side|region|area|half)\b",
+    re.I,
+)
+"""A region of the scene named like a part ("the bottom part", "the left side"): no part of the path."""
 LANDMARK_STEPS = ("move_closer", "move_away", "append_segment")
 """Steps a small model writes with the path's own start or goal as their point (a segment appended
 to the goal goes nowhere)."""
@@ -173,6 +185,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     if NEW_GOAL.search(words):
         _reach_the_new_goal(lines, notes, words)
     _object_moves_of_first_waypoints(lines, notes, words)
+    _moves_of_no_part(lines, notes, words)
     for move in part_moves(words):
         if move.part == "past the goal" and any(_goes_on(line) for line in lines):
             continue
@@ -218,13 +231,44 @@ def _amount_argument(call: str) -> str:
     return ast.unparse(arguments[2]) if len(arguments) > 2 else "None"
 
 
+def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
+    """A move of the start or the goal where the words name no part or end: the whole path's move.
+
+    "Lift the route up 0.2" came back as ``shift_goal(t, 'up', 0.2)``: the goal rises, the start
+    stays, the middle rises half as much; "move to the bottom part" as ``shift_part(t, 'down',
+    part='end')``. Where no word names a part or an end of the path (``words.PART_OR_END``: "the
+    start", "the goal", "the end", "the first half", "waypoints"; "the bottom part" is a region of
+    the scene, not of the path), a ``shift_goal`` / ``shift_start`` / ``shift_part`` in a direction
+    the words say is ``shift`` with its amount.
+    """
+    if PART_OR_END.search(REGION.sub(" ", words)):
+        return
+    said = said_directions(words)
+    for index, call in _calls(lines, ("shift_goal", "shift_start", "shift_part")):
+        if direction_argument(call) not in said:
+            continue
+        before = lines[index].strip()
+        kept = [keyword for keyword in call.keywords if keyword.arg != "part"]
+        after = "t = " + ast.unparse(ast.Call(ast.Name("shift", ast.Load()), call.args[:3], kept))
+        lines[index] = in_place_of(lines[index], after)
+        notes.append(
+            f"`{before}` -> `{after}`: the instruction names no part of the path, so all of it moves"
+        )
+
+
 def _reach_the_new_goal(lines: list[str], notes: list[str], words: str) -> None:
     """The one ``pass_through``/``move_closer`` of the new goal's objects, as ``reach`` of their point.
 
-    The words after "new goal" (to the end of their sentence or a "then"/"but") must name every
-    object the point is made of: "go closer to the box and end at the goal" gives no new goal.
+    The clause that says "new goal" and the words after it (to the end of their sentence or a
+    "then"/"but") must name every object the point is made of: "make the midpoint of the box and
+    the lamp the new goal" gives one, "go closer to the box and end at the goal" gives none.
     """
-    given = " ".join(SENTENCES.split(words[m.end() :])[0] for m in NEW_GOAL.finditer(words))
+    detected = [
+        name for _, call in _calls(lines, ("pass_through", "move_closer")) for name in _detected_names(call)
+    ]
+    saying = [clause for clause in split_clauses(words, detected) if NEW_GOAL.search(clause)]
+    following = [SENTENCES.split(words[m.end() :])[0] for m in NEW_GOAL.finditer(words)]
+    given = " ".join(saying + following)
     passing = [
         (i, call)
         for i, call in _calls(lines, ("pass_through", "move_closer"))

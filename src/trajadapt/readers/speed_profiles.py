@@ -1,0 +1,114 @@
+"""A pace the words ask to run down to a stop, or up from rest, written as one uniform scale.
+
+"Head toward the front and ease off until you come to a complete stop" came back as
+``scale_speed(t, 0.65)``: slower everywhere, and never stopping. Slowing until a stop is a profile,
+``speed_profile(t, 'decelerate', start=0.7)`` (down to 0 at the goal over the last 30%, as the
+prompt's own example); speeding up from rest is ``speed_profile(t, 'accelerate')``. A clause asks
+the first when it asks slower and says where the slowing ends ("until you come to a complete
+stop", "down to zero", "till the speed reaches 0", "to a standstill"), the second when it asks
+faster from a standstill ("from rest", "from zero"), said in the clause or the one before it;
+words that name a scene object ("slow down until you stop at the box") give a place, not a
+profile, and are left to the other readers. The one speed step that scales or sets the speed of
+the whole path (no ``near=``, no ``part=``) becomes the profile. A profile that goes the other way
+from the pace the words ask ("reduce the speed evenly as you come to the goal" answered with
+'constant' or 'accelerate') is turned to the asked one. A review note says what changed.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+
+from trajadapt.code_parse import call_of, in_place_of
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import FASTER, SLOWER, names_in
+
+TO_A_STOP = re.compile(
+    r"\b(?:(?:until|till|to|into)\s+(?:you\s+|it\s+|the\s+\w+\s+)?(?:comes?\s+to\s+|reach(?:es)?\s+|gets?\s+to\s+)?"
+    r"(?:a\s+)?(?:complete\s+|full\s+|dead\s+)?(?:stop|standstill|halt)"
+    r"|(?:down\s+)?to\s+(?:zero|0)(?:\s+speed)?"
+    r"|(?:speed|velocity|pace)\s+(?:reaches|hits|becomes|is)\s+(?:zero|0))\b",
+    re.I,
+)
+"""Where a slowing ends: at a stop."""
+FROM_REST = re.compile(r"\bfrom\s+(?:a\s+)?(?:standstill|rest|zero|0|stop|stationary)\b", re.I)
+"""Where a speeding up begins: at rest."""
+UNIFORM_STEPS = ("scale_speed", "set_speed")
+EVEN_PACE = re.compile(
+    r"\b(?:constant|steady|uniform|same|unchanging|fixed)\s+(?:\w+\s+)?(?:speed|pace|velocity)", re.I
+)
+"""Words of an even speed: a 'constant' profile is what they ask."""
+STOP_RAMP_START = 0.7
+"""Where a slowing to a stop begins: over the last 30% of the path, as the prompt's own example
+("slow down gradually towards the goal" -> ``speed_profile(t, 'decelerate', start=0.7)``)."""
+
+
+def asked_profile(words: str, names: Iterable[str]) -> str | None:
+    """'decelerate' or 'accelerate' when a clause of ``words`` asks one (see the module), else None."""
+    names = list(names)
+    asked = set()
+    clauses = split_clauses(words, names)
+    for before, clause in zip(("", *clauses), clauses, strict=False):
+        said = f"{before} {clause}"  # "start from a standstill and speed up": the pace in the next clause
+        if names_in(said, names):
+            continue
+        if SLOWER.search(clause) and TO_A_STOP.search(said):
+            asked.add("decelerate")
+        elif FASTER.search(clause) and FROM_REST.search(said):
+            asked.add("accelerate")
+    return asked.pop() if len(asked) == 1 else None
+
+
+def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with its one whole-path speed step made the asked profile (see the module)."""
+    words = " ".join(asked)
+    code, notes = _profiles_the_right_way(code, words)
+    profile = asked_profile(words, names)
+    lines = code.splitlines()
+    uniform = [i for i, line in enumerate(lines) if _whole_path_pace(line)]
+    if profile is None or len(uniform) != 1:
+        return code, notes
+    index = uniform[0]
+    call = call_of(lines[index], UNIFORM_STEPS)
+    assert call is not None  # found by _whole_path_pace
+    start = f", start={STOP_RAMP_START}" if profile == "decelerate" else ""
+    target, trajectory = lines[index].split("=")[0].strip(), ast.unparse(call.args[0])
+    step = f"{target} = speed_profile({trajectory}, {profile!r}{start})"
+    ends = "runs down to a stop" if profile == "decelerate" else "starts from rest"
+    note = f"`{lines[index].strip()}` -> `{step}`: the words ask a pace that {ends}, not one scale"
+    lines[index] = in_place_of(lines[index], step)
+    return "\n".join(lines), [*notes, note]
+
+
+def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
+    """``code`` with a profile that goes the other way from the asked pace turned ('constant' too).
+
+    "As you come to the goal, reduce the speed evenly" came back as ``speed_profile(t, 'constant',
+    start=0.7)``, which speeds the end up to the path's top speed. Words that ask only slower make a
+    profile 'decelerate', only faster 'accelerate'; words of an even speed ("constant", "steady",
+    "uniform speed") keep 'constant'.
+    """
+    slower, faster = bool(SLOWER.search(words)), bool(FASTER.search(words))
+    if slower == faster:
+        return code, []
+    wanted = "decelerate" if slower else "accelerate"
+    lines, notes = code.splitlines(), []
+    for index, line in enumerate(lines):
+        call = call_of(line, ("speed_profile",))
+        kind = call.args[1] if call is not None and len(call.args) > 1 else None
+        if not isinstance(kind, ast.Constant) or kind.value in (wanted, "trapezoidal"):
+            continue
+        if kind.value == "constant" and EVEN_PACE.search(words):
+            continue
+        kind.value = wanted
+        step = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"  # type: ignore[arg-type]
+        notes.append(f"`{line.strip()}` -> `{step}`: the words ask a {'slower' if slower else 'faster'} pace")
+        lines[index] = in_place_of(line, step)
+    return "\n".join(lines), notes
+
+
+def _whole_path_pace(line: str) -> bool:
+    """Whether ``line`` scales or sets the speed of the whole path (no place, no part)."""
+    call = call_of(line, UNIFORM_STEPS)
+    return call is not None and len(call.args) <= 2 and not call.keywords

@@ -1,0 +1,82 @@
+"""A pace the words ask to run down to a stop or up from rest (readers.speed_profiles).
+
+Phrasings written for the reader; none of the benchmark sets has them.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers.speed_profiles import asked_profile, profile_paces
+
+NAMES = ["box", "lamp"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("words", "profile"),
+    [
+        ("glide forward, slowing down till it comes to a full stop", "decelerate"),
+        ("brake gently down to zero", "decelerate"),
+        ("decelerate until the speed reaches 0", "decelerate"),
+        ("start from a standstill and speed up", "accelerate"),
+        ("pick up the pace from rest", "accelerate"),
+        ("slow down near the box", None),  # a place, no stop
+        ("slow down until you stop at the box", None),  # a place to stop at
+        ("go faster", None),
+    ],
+)  # fmt: skip
+def test_a_slowing_to_a_stop_or_a_speeding_up_from_rest(words: str, profile: str | None) -> None:
+    assert asked_profile(words, NAMES) == profile
+
+
+def test_the_one_whole_path_scale_becomes_the_profile() -> None:
+    code, notes = profile_paces(
+        program("t = shift(t, 'front')", "t = scale_speed(t, 0.65)"),
+        ["move forward and ease off to a standstill"],
+        NAMES,
+    )
+    assert code == program("t = shift(t, 'front')", "t = speed_profile(t, 'decelerate', start=0.7)")
+    assert "down to a stop" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "steps",
+    [
+        ("t = scale_speed(t, 0.65, near=detect_objects('box'))",),  # placed: not the whole path
+        ("t = scale_speed(t, 0.65)", "t = set_speed(t, 0.2)"),  # which one?
+        ("t = speed_profile(t, 'decelerate')",),  # already the profile
+    ],
+)
+def test_placed_several_or_profiled_paces_stay(steps: tuple[str, ...]) -> None:
+    code = program(*steps)
+    assert profile_paces(code, ["slow down to zero"], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        ("t = speed_profile(t, 'constant', start=0.6)", "lower the pace gently towards the end",
+         "t = speed_profile(t, 'decelerate', start=0.6)"),
+        ("t = speed_profile(t, 'decelerate')", "pick up speed as you go", "t = speed_profile(t, 'accelerate')"),
+    ],
+)  # fmt: skip
+def test_a_profile_the_other_way_from_the_asked_pace_is_turned(step: str, words: str, expected: str) -> None:
+    code, notes = profile_paces(program(step), [words], NAMES)
+    assert code == program(expected)
+    assert "pace" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("step", "words"),
+    [
+        ("t = speed_profile(t, 'constant')", "slow down to a steady speed"),  # an even speed asked
+        ("t = speed_profile(t, 'trapezoidal')", "slow down at both ends"),  # speeds up and slows down
+        ("t = speed_profile(t, 'constant')", "slow near the box, hurry past the lamp"),  # both paces
+    ],
+)
+def test_profiles_the_words_allow_stay(step: str, words: str) -> None:
+    assert profile_paces(program(step), [words], NAMES) == (program(step), [])

@@ -24,6 +24,9 @@ def program(*steps: str) -> str:
         # the lamp only names where the speed changes: no step moves the path by it
         ("hurry, and keep more distance from the lamp", ("t = scale_speed(t, 1.4, near=detect_objects('lamp'))",),
          "t = move_away(t, detect_objects('lamp'))"),
+        # a least distance stated: the clearance to keep
+        ("hurry, and stay at least 0.35 away from the lamp", ("t = scale_speed(t, 1.4)",),
+         "t = avoid(t, detect_objects('lamp'), 0.35)"),
     ],
 )  # fmt: skip
 def test_a_dropped_relation_becomes_the_last_step(words: str, steps: tuple[str, ...], added: str) -> None:

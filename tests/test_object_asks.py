@@ -104,6 +104,11 @@ def test_unclear_asks_are_left_out(words: str) -> None:
             ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
         ),
         (
+            "t = move_away(t, detect_objects('sofa'))",
+            "keep a minimum separation of 0.4 from the sofa",
+            ["t = avoid(t, detect_objects('sofa'), 0.4)"],
+        ),  # a least distance stated: a vague move away may stay nearer
+        (
             "t = circle_around(t, detect_objects('sofa'))",
             "ease off all around the sofa",
             ["t = scale_speed(t, 0.65, near=detect_objects('sofa'))"],

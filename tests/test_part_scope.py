@@ -63,6 +63,9 @@ def test_a_whole_path_shift_becomes_a_shift_of_the_start_and_keeps_its_amount() 
         ("t = shift(t, 'down')", "the first 4 waypoints go lower", "t = shift_part(t, 'down', part=(0, 4))"),
         ("t = shift_goal(t, 'up', 0.3)", "hoist everything up 0.3, a bit nearer the box", "t = shift(t, 'up', 0.3)"),
         ("t = shift_start(t, 'left')", "bear left", "t = shift(t, 'left')"),  # no part named: all of it
+        ("t = shift_start(t, 'back')", "upon reaching the goal, retreat back a bit", "t = extend(t, 'a bit', 'back')"),
+        ("t = extend(t, 0.3, 'up')\nt = stop_at(t, detect_objects('goal'))", "once at the end, rise 0.3",
+         "t = extend(t, 0.3, 'up')"),  # the stop at the goal cut the extension off
         ("t = shift_part(t, 'up', part='end')", "head for the upper region", "t = shift(t, 'up')"),
         ("t = shift_part(t, 'down', 0.1, part='end')", "sink into the lower part by 0.1", "t = shift(t, 'down', 0.1)"),
         ("t = move_closer(t, detect_objects('goal'))", "once at the goal, keep moving for another 0.4", "t = extend(t, 0.4)"),

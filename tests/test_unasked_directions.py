@@ -103,3 +103,13 @@ def test_several_guesses_where_the_words_say_no_direction_become_the_asked_steps
     code, notes = replace_unasked_shifts(CODE.format(step=steps), [words], NAMES)
     assert code.splitlines()[1:-1] == expected
     assert len(notes) == steps.count("shift(")
+
+
+def test_an_unsaid_shift_beside_shifts_that_make_every_said_direction_is_left_out() -> None:
+    code, notes = replace_unasked_shifts(
+        CODE.format(step="t = shift(t, 'back', 0.5)\nt = shift(t, 'up', 0.5)"),
+        ["back the arm up by 0.5"],
+        NAMES,
+    )
+    assert code == CODE.format(step="t = shift(t, 'back', 0.5)")
+    assert "names no such direction" in notes[0]

@@ -30,6 +30,7 @@ from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_direction
         ("fly with more altitude over the crate", "up"),
         ("shed a little height near the goal", "down"),
         ("decrease the elevation of the route", "down"),
+        ("back the arm up a little", "back"),  # a phrasal verb, not up
     ],
 )
 def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> None:

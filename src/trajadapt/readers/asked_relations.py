@@ -7,7 +7,8 @@ For each object that one clause asks to come closer to or keep further from
 (``object_words.object_asks``: a clause of ``split_clauses`` that names that one object and asks
 one relation of it), when no line of the code but a speed step names the object (a speed step's
 ``near=`` says where the speed changes, not where the path goes), the reader adds
-``move_closer`` / ``move_away`` with the clause's vague word as the last step; a clause that places
+``move_closer`` / ``move_away`` with the clause's vague word as the last step (``avoid`` with the
+clearance when the clause states a least distance: "stay at least 0.2 from it"); a clause that places
 its request at a part or an end of the path ("after reaching the goal, approach the lamp") asks
 something else and is left to the model. A step that names
 the object in any other way (``avoid``, ``reach``, ``pass_through``, ``circle_around``, a
@@ -23,7 +24,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import SPEED_STEPS, after_last_step, called_name, skill_program
 from trajadapt.readers.object_words import asked_words, object_asks
-from trajadapt.readers.words import PART_OR_END, intensity_word
+from trajadapt.readers.words import MINIMUM_DISTANCE, PART_OR_END, intensity_word
 from trajadapt.skills import SKILL_NAMES
 
 STEP_OF = {"closer": "move_closer", "away": "move_away"}
@@ -44,9 +45,11 @@ def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -
             continue  # "after reaching the goal, approach the lamp" asks for more than the whole path closer
         if any(_names(line, ask.name) for line in lines):
             continue
-        word = intensity_word(ask.clause)
+        word, least = intensity_word(ask.clause), MINIMUM_DISTANCE.search(ask.clause)
         amount = f", {word!r}" if word else ""
         step = f"{variable} = {STEP_OF[ask.relation]}({variable}, detect_objects({ask.name!r}){amount})"
+        if least is not None and ask.relation == "away":  # "at least 0.2 from it": a clearance to keep
+            step = f"{variable} = avoid({variable}, detect_objects({ask.name!r}), {least.group(1)})"
         added.append(step)
         notes.append(
             f"added `{step}`: the words ask {asked_words(ask)} {ask.name} ({ask.clause.strip()!r}) "

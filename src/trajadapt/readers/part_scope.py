@@ -186,6 +186,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         _reach_the_new_goal(lines, notes, words)
     _object_moves_of_first_waypoints(lines, notes, words)
     _moves_of_no_part(lines, notes, words)
+    _stops_at_the_goal(lines, notes)
     for move in part_moves(words):
         if move.part == "past the goal" and any(_goes_on(line) for line in lines):
             continue
@@ -229,6 +230,23 @@ def _amount_argument(call: str) -> str:
     assert isinstance(parsed, ast.Expr) and isinstance(parsed.value, ast.Call)
     arguments = parsed.value.args
     return ast.unparse(arguments[2]) if len(arguments) > 2 else "None"
+
+
+def _stops_at_the_goal(lines: list[str], notes: list[str]) -> None:
+    """``stop_at`` the path's own goal asks nothing (the path ends there) or undoes a going-on: left out.
+
+    "Move left by 0.2 after you reach the goal" came back as ``extend(t, 0.2, 'left')`` then
+    ``stop_at(t, detect_objects('goal'))``, which cut the extension off again.
+    """
+    for line in [x for x in lines if (call := call_of(x, ("stop_at",))) is not None and _on_goal(call)]:
+        lines.remove(line)
+        notes.append(f"left out `{line.strip()}`: the path ends at its goal already")
+
+
+def _on_goal(call: ast.Call) -> bool:
+    """Whether the call's point is ``detect_objects('<the path's goal>')``."""
+    name = detected_name(call.args[1]) if len(call.args) > 1 else None
+    return name is not None and name.casefold() in {n.casefold() for n in GOAL_NAMES}
 
 
 def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
@@ -340,9 +358,10 @@ def _scene_point(call: ast.Call) -> bool:
 def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | None, ast.expr | None]:
     """The line written for ``move`` and the amount it gave, or (None, None) when none or several.
 
-    A move past the goal with no direction takes a shift in a direction the words never say.
+    A move past the goal takes any shift in its direction (``shift_start(t, 'back')`` for "once the
+    goal is reached, retreat back"); with no direction, one in a direction the words never say.
     """
-    shifts = SHIFTS if move.part == "past the goal" else SHIFTS[:1]
+    shifts = (*SHIFTS, "shift_start", "shift_part") if move.part == "past the goal" else SHIFTS[:1]
     wanted = (lambda d: d is not None and d not in said) if move.direction is None else move.direction.__eq__
     written = [(i, call) for i, call in _calls(lines, shifts) if wanted(direction_argument(call))]
     if not written:

@@ -130,16 +130,20 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
 def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[list[str], list[str]]:
     """The code without the shift at ``index`` when the other steps make all the words ask.
 
-    That is when the words name no direction and move no part or end of the path (a part named
-    for a pause or a pace, "halfway, stop and wait", moves nothing), and another step changes the
-    path or its pace: the shift serves no clause (a guess copied from an example).
+    That is when every direction the words name is made by another shift (none named: none to
+    make; "back the route up by 3" answered with a shift back and a shift up) and they move no part
+    or end of the path (a part named for a pause or a pace, "halfway, stop and wait", moves
+    nothing), and another step changes the path or its pace: the shift serves no clause (a guess
+    copied from an example).
     """
     steps = [i for i, line in enumerate(lines) if called_name(line) not in (None, "get_trajectory")]
     moves_a_part = PART_OR_END.search(words) and MOVING.search(words)
-    if said_directions(words) or moves_a_part or steps == [index]:
+    made = {_shift_direction(lines[i]) for i in steps if i != index}
+    if not said_directions(words) <= made or moves_a_part or steps == [index]:
         return lines, []
     before = lines[index].strip()
-    note = f"left out `{before}`: the instruction names no direction, and the other steps make what it asks"
+    said = "no direction" if not made & said_directions(words) else "no such direction"
+    note = f"left out `{before}`: the instruction names {said}, and the other steps make what it asks"
     return [*lines[:index], *lines[index + 1 :]], [note]
 
 

@@ -114,6 +114,15 @@ a distance: "reduce the gap", "widen your clearance"; "avoid" asks a clearance, 
 leave to ``avoid``; only the effect's flags count it as away)."""
 
 
+MINIMUM_DISTANCE = re.compile(
+    r"\b(?:at\s+least|no\s+(?:closer|nearer|less)\s+than|(?:a\s+)?minimum\s+(?:of\s+)?"
+    rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?)\s*({NUMBER_TEXT})",
+    re.I,
+)
+"""A clearance the words state as a least distance: "at least 0.2", "no closer than 0.2", "a minimum
+clearance of 0.2"."""
+
+
 def whole_words(text: str) -> str:
     """Lower-case words with a space on each side, so that names match whole words only.
 
@@ -144,6 +153,10 @@ LESS_HEIGHT = re.compile(
     rf"\b(?:los(?:e|es|ing)|lost|less|reduc\w*|decreas\w*|shed\w*|smaller)\s+{_HEIGHT_NOUN}", re.I
 )
 """More or less of a height: a direction said with a noun ("gain a bit of altitude", "less height")."""
+BACK_UP = re.compile(
+    r"\bback(?:s|ed|ing)?\s+(?:(?:it|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|arm))\s+)?up\b", re.I
+)
+"""The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
 
 DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 """Every word that names a direction, to its canonical direction."""
@@ -178,10 +191,10 @@ def said_directions(words: str) -> set[str]:
     A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
     (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
     ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
-    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``).
+    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up" is back.
     """
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
-    text = LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text))
+    text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
     return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 

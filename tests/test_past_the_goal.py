@@ -102,3 +102,16 @@ def test_in_the_stage_the_place_comes_before_the_pause_there() -> None:
         "t = wait(t, detect_objects('vase'), 10)",
     ]
     assert [note.reader for note in notes] == ["past-the-goal", "past-the-goal", "asked-pauses"]
+
+
+def test_a_pause_at_the_place_stays_and_comes_after_the_segment() -> None:
+    code, _ = add_destination(
+        program("t = wait(t, detect_objects('Vase'), 5)", "t = smooth(t)"),
+        ["after the goal, fly to the vase and hover there for 5 timesteps"],
+        NAMES,
+    )
+    assert code == program(
+        "t = append_segment(t, detect_objects('vase'))",
+        "t = wait(t, detect_objects('Vase'), 5)",
+        "t = smooth(t)",
+    )

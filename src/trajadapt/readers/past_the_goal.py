@@ -15,9 +15,10 @@ clause that lengthens the path by no number ("extend it smoothly until it reache
 one too. When those clauses say to go to one scene object ("approach", "head to", "fly over to",
 "go straight for", "extend it to") and name no other, that object is the new end. When no ``append_segment``
 goes there, the steps written for those words leave the code and ``append_segment(t,
-detect_objects(<object>))`` is added as the last step:
+detect_objects(<object>))`` is added as the last step (before a step that pauses or spirals there):
 
-- a step on that object (not a speed step), when no clause before the goal names it;
+- a step that moves the path by that object (``move_closer``, ``pass_over``, ``reach``, ``avoid``,
+  ...; not a speed step, a pause or a spiral there), when no clause before the goal names it;
 - a move relative to the goal itself (``move_closer(t, detect_objects('goal'))``), or an
   ``extend`` (the path goes on, but not to the object);
 - a whole-path shift in a direction that only the after-goal clauses say ("above it"; not a
@@ -64,6 +65,8 @@ WHOLE_PATH = re.compile(r"\b(?:path|trajectory|route|whole|entire|start\w*|first
 SENTENCE_END = re.compile(r"[.;!?](?!\d)")
 MOVED_TO_GOAL = ("move_closer", "move_away", "pass_through", "pass_over", "reach", "stop_at")
 SHIFTS = ("shift", "shift_goal")
+AT_THE_END = ("wait", "spiral", "circle_around")
+"""Steps that act at the place the words go to: they come after the segment that gets there."""
 
 
 @dataclass(frozen=True)
@@ -116,12 +119,15 @@ def add_destination(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     step = f"{variable} = append_segment({variable}, detect_objects({place!r}))"
     end = after_last_step(lines, SKILL_NAMES)
     kept = [line for i, line in enumerate(lines[:end]) if i not in written_for]
+    at = next(
+        (i for i, x in enumerate(kept) if called_name(x) in AT_THE_END and _detects(x, place)), len(kept)
+    )
     said = ", ".join(repr(clause.strip()) for clause in asked_after.clauses)
     notes = [
         f"left out `{lines[i].strip()}`: {said} ask(s) for the {place} after the goal" for i in written_for
     ]
     notes.append(f"added `{step}`: {said} go(es) on from the goal to the {place}")
-    return "\n".join([*kept, step, *lines[end:]]), notes
+    return "\n".join([*kept[:at], step, *kept[at:], *lines[end:]]), notes
 
 
 def _only_arrives(clause: str) -> bool:
@@ -152,8 +158,8 @@ def _written_for(line: str, place: str, before: str, after: AfterGoal) -> bool:
     objects = [found.casefold() for found in objects_of(call_of(line, (name,)))]
     if name in MOVED_TO_GOAL and any(found in GOAL_NAMES for found in objects):
         return True
-    if place.casefold() in objects or _detects(line, place):
-        return not names_in(before, [place])
+    if name in MOVED_TO_GOAL + ("avoid",) and _detects(line, place):
+        return not names_in(before, [place])  # a pause or a spiral there is what the words may ask
     if name in SHIFTS:
         direction = direction_argument(call_of(line, SHIFTS))
         placed = " ".join(clause for clause in after.clauses if not EXTENDING.search(clause))
@@ -166,5 +172,6 @@ def _detects(line: str, place: str) -> bool:
     """Whether the line detects the object ``place`` anywhere in its arguments."""
     call = call_of(line, SKILL_NAMES)
     return call is not None and any(
-        isinstance(node, ast.expr) and detected_name(node) == place for node in ast.walk(call)
+        isinstance(node, ast.expr) and (detected_name(node) or "").casefold() == place.casefold()
+        for node in ast.walk(call)
     )

@@ -75,7 +75,7 @@ READERS: tuple[Reader, ...] = (
            add_asked_relations),
     Reader("past-the-goal", "a place the words ask to go to once the goal is reached",
            add_destination),
-    Reader("asked-pauses", "a pause a clause asks for a count of timesteps and no step makes",
+    Reader("asked-pauses", "a pause a clause asks for a count of timesteps (or a while) and no step makes",
            add_asked_pauses),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("part-scope", "the part of the path a clause moves",

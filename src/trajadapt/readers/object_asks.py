@@ -112,7 +112,7 @@ def _stated_clearances(lines: list[str], notes: list[str], words: str, names: li
         if len(named) != 1 or least is None or asks_pace(clause):
             continue
         steps = [i for i, x in enumerate(lines) if on_object(call_of(x, ("move_away",)), named[0])]
-        if len(steps) != 1 or stated_numbers(lines[steps[0]].split("detect_objects")[-1]):
+        if len(steps) != 1 or _amount_is_a_number(call_of(lines[steps[0]], ("move_away",))):
             continue
         before = lines[steps[0]].strip()
         after = f"t = avoid(t, detect_objects({named[0]!r}), {least.group(1)})"
@@ -120,6 +120,13 @@ def _stated_clearances(lines: list[str], notes: list[str], words: str, names: li
         notes.append(
             f"`{before}` -> `{after}`: the instruction keeps at least {least.group(1)} from {named[0]}"
         )
+
+
+def _amount_is_a_number(call: ast.Call | None) -> bool:
+    """Whether a ``move_away`` step was given its amount as a number (by position or keyword)."""
+    given = [] if call is None else call.args[2:3] + [k.value for k in call.keywords if k.arg == "amount"]
+    plain = [value.operand if isinstance(value, ast.UnaryOp) else value for value in given]  # -0.3 too
+    return any(isinstance(value, ast.Constant) and isinstance(value.value, int | float) for value in plain)
 
 
 def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:

@@ -99,7 +99,8 @@ REGION = re.compile(
 LANDMARK_STEPS = ("move_closer", "move_away", "append_segment")
 """Steps a small model writes with the path's own start or goal as their point (a segment appended
 to the goal goes nowhere)."""
-LANDMARKS = {name.casefold() for name in START_NAMES + GOAL_NAMES}
+GOALS = frozenset(name.casefold() for name in GOAL_NAMES)
+LANDMARKS = GOALS | {name.casefold() for name in START_NAMES}
 
 
 @dataclass(frozen=True)
@@ -238,15 +239,11 @@ def _stops_at_the_goal(lines: list[str], notes: list[str]) -> None:
     "Move left by 0.2 after you reach the goal" came back as ``extend(t, 0.2, 'left')`` then
     ``stop_at(t, detect_objects('goal'))``, which cut the extension off again.
     """
-    for line in [x for x in lines if (call := call_of(x, ("stop_at",))) is not None and _on_goal(call)]:
+    for line in [
+        x for x in lines if (call := call_of(x, ("stop_at",))) is not None and _on_landmark(call, GOALS)
+    ]:
         lines.remove(line)
         notes.append(f"left out `{line.strip()}`: the path ends at its goal already")
-
-
-def _on_goal(call: ast.Call) -> bool:
-    """Whether the call's point is ``detect_objects('<the path's goal>')``."""
-    name = detected_name(call.args[1]) if len(call.args) > 1 else None
-    return name is not None and name.casefold() in {n.casefold() for n in GOAL_NAMES}
 
 
 def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
@@ -384,7 +381,7 @@ def _calls(lines: list[str], skills: tuple[str, ...]) -> list[tuple[int, ast.Cal
     return [(i, call) for i, call in found if call is not None]
 
 
-def _on_landmark(call: ast.Call) -> bool:
-    """Whether the call's point is ``detect_objects('<the path's start or goal>')``."""
+def _on_landmark(call: ast.Call, landmarks: frozenset[str] = LANDMARKS) -> bool:
+    """Whether the call's point is ``detect_objects('<the path's start or goal>')`` (one of ``landmarks``)."""
     name = detected_name(call.args[1]) if len(call.args) > 1 else None
-    return name is not None and name.casefold() in LANDMARKS
+    return name is not None and name.casefold() in landmarks

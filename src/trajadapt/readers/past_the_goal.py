@@ -41,7 +41,7 @@ from trajadapt.code_parse import (
     called_name,
     detected_name,
     direction_argument,
-    objects_of,
+    on_object,
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
@@ -155,8 +155,8 @@ def _written_for(line: str, place: str, before: str, after: AfterGoal) -> bool:
         return False
     if name == "extend":
         return True
-    objects = [found.casefold() for found in objects_of(call_of(line, (name,)))]
-    if name in MOVED_TO_GOAL and any(found in GOAL_NAMES for found in objects):
+    call = call_of(line, (name,))
+    if name in MOVED_TO_GOAL and any(on_object(call, goal) for goal in GOAL_NAMES):
         return True
     if name in MOVED_TO_GOAL + ("avoid",) and _detects(line, place):
         return not names_in(before, [place])  # a pause or a spiral there is what the words may ask

@@ -144,3 +144,55 @@ def test_a_step_that_does_something_else_is_replaced_with_a_note(
 def test_steps_the_words_agree_with_stay(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert replace_object_steps(code, [words], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "steps", "expected"),
+    [
+        (  # the pace went to the object of the distance clause, the distance to the other
+            "ease off whenever the lamp is within 0.5, and give the sofa a wider berth",
+            [
+                "t = move_away(t, detect_objects('Lamp'))",
+                "t = scale_speed(t, 0.6, near=detect_objects('sofa'))",
+            ],
+            [
+                "t = move_away(t, detect_objects('sofa'))",
+                "t = scale_speed(t, 0.6, near=detect_objects('Lamp'), radius=0.5)",
+            ],
+        ),
+        (  # the distance clause's object has its own step: the one on the paced object leaves
+            "hug the red box. Hurry up close to the sofa",
+            [
+                "t = move_closer(t, detect_objects('sofa'))",
+                "t = scale_speed(t, 0.7, near=detect_objects('red box'))",
+                "t = move_closer(t, detect_objects('red box'))",
+            ],
+            [
+                "t = scale_speed(t, 1.4, near=detect_objects('sofa'))",
+                "t = move_closer(t, detect_objects('red box'))",
+            ],
+        ),
+    ],
+)
+def test_a_pace_placed_near_the_object_of_a_distance_clause_is_swapped(
+    words: str, steps: list[str], expected: list[str]
+) -> None:
+    code, notes = replace_object_steps(CODE.format(step="\n".join(steps)), [words], NAMES)
+    assert code == CODE.format(step="\n".join(expected))
+    assert notes
+
+
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        # each object's step is where its clause asks it
+        ("ease off near the lamp and give the sofa a wider berth",
+         ["t = move_away(t, detect_objects('sofa'))", "t = scale_speed(t, 0.6, near=detect_objects('Lamp'))"]),
+        # two paces asked: which speed step belongs where is not this reader's to say
+        ("slow near the lamp, faster near the box and keep away from the sofa",
+         ["t = scale_speed(t, 0.6, near=detect_objects('sofa'))"]),
+    ],
+)  # fmt: skip
+def test_paces_placed_where_asked_or_unclear_stay(words: str, steps: list[str]) -> None:
+    code = CODE.format(step="\n".join(steps))
+    assert replace_object_steps(code, [words], NAMES)[0] == code

@@ -143,6 +143,15 @@ def objects_of(call: ast.Call | None) -> list[str]:
     return [detected_name(item) or "" for item in items]
 
 
+def placed_near(call: ast.Call | None) -> str | None:
+    """The object a ``scale_speed`` / ``set_speed`` step is placed near (its ``near`` point), if named."""
+    if call is None or not isinstance(call.func, ast.Name) or call.func.id not in SPEED_STEPS[:2]:
+        return None
+    near = next((k.value for k in call.keywords if k.arg == "near"), None)
+    point = near if near is not None else (call.args[2] if len(call.args) > 2 else None)
+    return None if point is None else detected_name(point)
+
+
 def step_on_object(line: str, name: str) -> bool:
     """Whether ``line`` is a distance step (``avoid``, ``move_away``, ``move_closer``) on object ``name``."""
     return on_object(call_of(line, DISTANCE_STEPS), name)

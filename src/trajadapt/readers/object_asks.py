@@ -26,6 +26,13 @@ When the words name no object at all, a side is a side of the scene ("stay on th
 the front part"): a ``keep_side`` about an object the user never named becomes a ``shift`` to that
 side with the clause's vague word.
 
+Crossed objects: when one clause asks a pace near one object and another asks a distance to a
+second, and the code places its one speed step near the second object and none near the first
+("go faster within 0.3 of the ear and move closer to the tin opener" -> ``move_closer(ear)``,
+``scale_speed(t, 1.4, near=tin opener)``), the speed step moves to the first object (with the
+clause's radius), and a distance step on the first object goes to the second, or leaves when the
+second has its own.
+
 An object that two clauses ask different things of is left alone, and so is every step the words
 agree with. A review note says what was replaced and why. Measured on stored answers in
 docs/benchmarks.md.
@@ -48,6 +55,7 @@ from trajadapt.code_parse import (
     objects_of,
     on_object,
     parse_code,
+    placed_near,
 )
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import ObjectAsk, asked_words, object_asks
@@ -81,7 +89,8 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     """``code`` with each step on an object that does not do what the words ask of it replaced, noted."""
     words, names = " ".join(asked), list(names)
     asks = object_asks(words, names)
-    lines, notes = code.splitlines(), []
+    lines, notes = code.splitlines(), list[str]()
+    _crossed_objects(lines, notes, asks)
     changes_speed = any(call_of(line, SPEED_STEPS) is not None for line in lines)
     for ask in asks.values():
         if ask.relation in ("faster", "slower") and changes_speed:
@@ -99,6 +108,61 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     _unnamed_midpoints(lines, notes, words, names)
     _stated_clearances(lines, notes, words, names)
     return _sides_of_the_scene(lines, notes, words, names)
+
+
+def _crossed_objects(lines: list[str], notes: list[str], asks: dict[str, ObjectAsk]) -> None:
+    """A speed step near the object a distance is asked of, when a pace is asked near another: swapped."""
+    paced = [a for a in asks.values() if a.relation in ("faster", "slower")]
+    placed = [a for a in asks.values() if a.relation in ("closer", "away")]
+    if len(paced) != 1 or len(placed) != 1:
+        return
+    pace, place = paced[0], placed[0]
+
+    def speed_near(name: str) -> list[int]:
+        return [i for i, x in enumerate(lines) if (placed_near(call_of(x, SPEED_STEPS)) or "").casefold()
+                == name.casefold()]  # fmt: skip
+
+    crossed = speed_near(place.name)
+    if speed_near(pace.name) or len(crossed) != 1:
+        return
+    index, before = crossed[0], lines[crossed[0]].strip()
+    lines[index] = in_place_of(lines[index], _placed_near(lines[index], pace))
+    notes.append(f"`{before}` -> `{lines[index].strip()}`: the instruction asks {asked_words(pace)} "
+                 f"{pace.name}, and {asked_words(place)} {place.name}")  # fmt: skip
+    _moved_distance_steps(lines, notes, pace, place)
+
+
+def _placed_near(line: str, pace: ObjectAsk) -> str:
+    """``line`` (a speed step) placed near ``pace``'s object, with its radius, going the asked way."""
+    _, call, skill = assigned_call(line)  # type: ignore[misc]
+    keywords = [k for k in call.keywords if k.arg not in ("near", "radius")]
+    call.args = call.args[:2]
+    call.keywords = [*keywords, ast.keyword("near", _expression(f"detect_objects({pace.name!r})"))]
+    if pace.radius is not None:
+        call.keywords.append(ast.keyword("radius", ast.Constant(pace.radius)))
+    factor = call.args[1] if len(call.args) > 1 else None
+    faster = pace.relation == "faster"
+    if skill == "scale_speed" and isinstance(factor, ast.Constant) and isinstance(factor.value, int | float):
+        if (float(factor.value) > 1.0) != faster:
+            call.args[1] = ast.Constant(speed_factor(pace.clause, faster=faster))
+    return f"t = {ast.unparse(call)}"
+
+
+def _moved_distance_steps(lines: list[str], notes: list[str], pace: ObjectAsk, place: ObjectAsk) -> None:
+    """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out."""
+    steps = [i for i, x in enumerate(lines) if objects_of(call_of(x, DISTANCE_STEPS)) == [pace.name]]
+    has_own = any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines)
+    for index in reversed(steps):
+        before = lines[index].strip()
+        if has_own:
+            del lines[index]
+            notes.append(f"left out `{before}`: the instruction asks only a pace near {pace.name}")
+            continue
+        wanted = "move_closer" if place.relation == "closer" else "move_away"
+        word = intensity_word(place.clause)
+        after = f"t = {wanted}(t, detect_objects({place.name!r}){f', {word!r}' if word else ''})"
+        lines[index] = in_place_of(lines[index], after)
+        notes.append(f"`{before}` -> `{after}`: the instruction asks {asked_words(place)} {place.name}")
 
 
 def _stated_clearances(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:

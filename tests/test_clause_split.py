@@ -55,6 +55,33 @@ def test_a_lead_in_goes_with_the_request_it_sets():
     assert split_clauses("once there, circle the lamp twice", NAMES) == ("once there, circle the lamp twice",)
 
 
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        # a condition of place before its request, in words none of the sets has
+        ("If you get close to the chair, take it easy", ("If you get close to the chair, take it easy",)),
+        (
+            "While going by the lamp, ease off, and climb 0.1",
+            ("While going by the lamp, ease off", "climb 0.1"),
+        ),
+        (
+            "The table wobbles. As you come within 0.3 of the table, creep along.",
+            ("The table wobbles", "As you come within 0.3 of the table, creep along"),
+        ),
+    ],
+)
+def test_a_condition_of_place_goes_with_the_request_after_it(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
+
+
+def test_a_lead_in_that_asks_something_stays_a_request():
+    assert split_clauses("when near the box go up, and after that slow down", NAMES) == (
+        "when near the box go up",
+        "after that slow down",
+    )
+    assert split_clauses("As fast as you can, head left", NAMES) == ("As fast as you can", "head left")
+
+
 def test_decimal_points_do_not_break_and_nothing_is_lost():
     words = "Go right by 0.3. Then go down by .2 and slow down near the red mug"
     clauses = split_clauses(words, NAMES)

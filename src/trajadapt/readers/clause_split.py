@@ -8,7 +8,8 @@ of its own:
 - a piece that only names things ("between the chair *and the table*", "left *and right*"), or
   only qualifies the one before it ("*, a lot further*", "*, bulging upwards*", "*and keep it smooth*"
   is a request; "*and slowly*" is not);
-- a lead-in that sets when or where the next request applies ("*after reaching the goal,* go left").
+- a lead-in that sets when or where the next request applies ("*after reaching the goal,* go left",
+  "*whenever you pass near the wolf,* walk faster").
 
 A participle that makes a second request breaks too: after a request that is complete (it ends
 on a direction, a number or an object: "go slightly upwards *keeping* a smaller distance from the
@@ -38,15 +39,15 @@ from trajadapt.readers.words import (
 )
 
 BREAKS = re.compile(
-    r"(?:[,;!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also"
+    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also"
     r"|(?<!\ba )(?<!\blittle )(?<!\bshort )(?<!\bgood )while)\b",
     re.I,
 )
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
 
 LEAD_INS = re.compile(
-    r"^(?:after|once|when|whenever|before|upon|until|as soon as|at the end|at the start|in the end"
-    r"|finally|first|firstly|afterwards|near|around|close to|next to)\b",
+    r"^(?:after|once|when|whenever|if|while|as|before|upon|until|as soon as|at the end|at the start"
+    r"|in the end|finally|first|firstly|afterwards|near|around|close to|next to)\b",
     re.I,
 )
 """Words that open a piece saying when or where the following request applies."""
@@ -101,7 +102,9 @@ def _pieces(instruction: str) -> list[tuple[str, str]]:
         piece = instruction[position : found.start()].strip()
         if piece:
             pieces.append((joiner, piece))
-        joiner = found.group(0) if found.group(0) in ",;" else f" {found.group(0)} "
+        elif not pieces and found.group(0).strip(",;!?."):
+            continue  # a word that opens the instruction stays with it: "While passing the box, ..."
+        joiner = found.group(0) if found.group(0) in ",;:" else f" {found.group(0)} "
         position = found.end()
     rest = instruction[position:].strip()
     if rest:
@@ -153,7 +156,7 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
     """Whether a piece is a clause of its own rather than more words of the previous one."""
     if joiner.strip().lower() == "while":
         return not _only_a_place(piece, names)
-    if joiner.strip() not in ("", ",", "and", "but", "also"):
+    if joiner.strip() not in ("", ",", ":", "and", "but", "also"):
         return True  # a sentence mark, "then"
     if joiner.strip() == "and" and _second_of_a_pair(previous, piece, names):
         return False  # "the midpoint between the heron *and the spaniel* ..."
@@ -233,7 +236,7 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
 def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:
     """A lead-in piece that says when or where but asks nothing itself ('after reaching the goal')."""
     words = _content_words(LEAD_INS.sub("", piece), names)
-    return all(w.endswith(("ing", "ed")) or w in SETTING_WORDS for w in words)
+    return all(w.endswith(("ing", "ed")) or w in SETTING_WORDS or w in NEARNESS or w in MOVING for w in words)
 
 
 SETTING_WORDS = frozenset(
@@ -241,6 +244,12 @@ SETTING_WORDS = frozenset(
     "reach reaches reached get gets got hit hits at done finished there middle halfway".split()
 )
 """Words a lead-in may have besides its opening word and object names."""
+
+NEARNESS = frozenset(
+    "near nearby nearer close closer next proximity vicinity surroundings surrounding within beside "
+    "around past pass passes by re are is am get gets come comes".split()
+)
+"""Words of a lead-in that says where the next request applies: "whenever you pass near the wolf,"."""
 
 
 KEEPING = re.compile(

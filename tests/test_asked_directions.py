@@ -23,6 +23,9 @@ def program(*steps: str) -> str:
          "t = shift(t, 'up', 'slightly')"),
         ("swing the route backwards a lot, then slow down", ("t = scale_speed(t, 0.65)",),
          "t = shift(t, 'back', 'a lot')"),
+        # a move of the start or goal alone neither makes nor undoes a move of the whole path
+        ("lower the whole route a bit; the end point, though, goes up a bit",
+         ("t = shift_goal(t, 'up', 'a bit')",), "t = shift(t, 'down', 'a bit')"),
     ],
 )  # fmt: skip
 def test_a_dropped_direction_becomes_the_first_step(words: str, steps: tuple[str, ...], added: str) -> None:

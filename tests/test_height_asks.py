@@ -80,3 +80,22 @@ def test_a_height_step_holding_the_amount_of_a_move_up_or_down_becomes_that_shif
 def test_levels_other_numbers_and_other_directions_keep_the_height_step(step: str, words: str) -> None:
     code = CODE.format(step=step)
     assert relate_heights(code, [words]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "expected"),
+    [
+        ("t = avoid(t, [0, 0, 0], 0.3)", "cruise at an altitude of 0.3 above the floor", "t = set_height(t, 0.3)"),
+        ("t = move_away(t, (0.0, 0.0, 0.0), 0.5)", "never go below 0.5, the rotors need room", "t = stay_above(t, 0.5)"),
+        # a clearance from a named object, another number, or a height step already there: kept
+        ("t = avoid(t, detect_objects('lamp'), 0.3)", "fly at a height of 0.3", None),
+        ("t = avoid(t, [0, 0, 0], 0.2)", "fly at a height of 0.3", None),
+    ],
+)  # fmt: skip
+def test_a_clearance_from_a_made_up_point_by_the_asked_height_becomes_the_height_step(
+    step: str, words: str, expected: str | None
+) -> None:
+    code = f"t = get_trajectory()\n{step}\nmodified_trajectory = t"
+    changed, notes = relate_heights(code, [words])
+    assert changed == (code if expected is None else code.replace(step, expected))
+    assert bool(notes) == (expected is not None)

@@ -20,6 +20,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("stay to the front of the box", "box", "side", "front"),
         ("keep a smaller distance to the sofa", "sofa", "closer", None),
         ("give the lamp a wider berth", "Lamp", "away", None),
+        ("ease off if the lamp is no more than 0.4 away", "Lamp", "slower", 0.4),
+        ("speed up when less than 0.25 m from the sofa", "sofa", "faster", 0.25),
+        ("keep no closer than 0.3 to the sofa", "sofa", "away", None),
+        ("hold a minimum gap of 0.1 from the red box", "red box", "away", None),
     ],
 )
 def test_each_clause_asks_one_thing_of_the_one_object_it_names(
@@ -158,6 +162,17 @@ def test_steps_the_words_agree_with_stay(step: str, words: str) -> None:
             [
                 "t = move_away(t, detect_objects('sofa'))",
                 "t = scale_speed(t, 0.6, near=detect_objects('Lamp'), radius=0.5)",
+            ],
+        ),
+        (  # a clearance kept on the wrong object keeps its amount on the right one
+            "go slower when the sofa is not more than 0.3 off; keep at least 0.4 from the lamp",
+            [
+                "t = avoid(t, detect_objects('sofa'), 0.4)",
+                "t = scale_speed(t, 0.6, near=detect_objects('Lamp'))",
+            ],
+            [
+                "t = avoid(t, detect_objects('Lamp'), 0.4)",
+                "t = scale_speed(t, 0.6, near=detect_objects('sofa'), radius=0.3)",
             ],
         ),
         (  # the distance clause's object has its own step: the one on the paced object leaves

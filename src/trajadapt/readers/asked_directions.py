@@ -8,7 +8,8 @@ rather than a place ("above the lamp", "left of the box", "up to the lamp" are p
 to move that way, whatever else it asks ("go slightly upwards keeping a smaller distance from the
 chair"). When no step of the code has that direction or its opposite among its
 arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contradiction, which the
-effect report flags, not a dropped clause) nor, for up and down, sets a height, the reader adds
+effect report flags, not a dropped clause; a step that moves only the start or the goal counts
+neither way when the words name that end) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
 the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
@@ -25,7 +26,7 @@ from collections.abc import Iterable
 from trajadapt.code_parse import assigned_call, called_name, skill_program
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import PART_OR_END, intensity_word, said_directions
+from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
@@ -37,12 +38,18 @@ PLACE_OF = re.compile(
 the right" is one)."""
 NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
+END_STEPS = {"shift_goal": GOAL, "shift_start": START}
+"""Steps that move only an end, with the words that name it: where the words name that end, the step
+neither makes nor undoes a move of the whole path ("raise the path a little but move the goal down");
+where they do not, the model wrote the whole path's move as one (part-scope makes it a ``shift``)."""
 
 
 def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with a shift for each direction a clause asks and no step makes (see the module)."""
     lines = code.splitlines()
-    moved = {direction for line in lines for direction in _directions(line)}
+    words = " ".join(asked)
+    named = {step for step, end in END_STEPS.items() if end.search(words)}
+    moved = {direction for line in lines if called_name(line) not in named for direction in _directions(line)}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
     program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None:

@@ -7,7 +7,9 @@ at 1.5" -> ``set_height``; "below", "under", "lower than", "at most" -> ``stay_b
 "over", "higher than", "at least", "exceed" -> ``stay_above``; a negation just before turns the
 relation round ("never higher than 3", "do not exceed 3" -> ``stay_below``). When the words give
 exactly one such height and the code has exactly one height step with that number and another
-skill, the step's skill is replaced. A review note says so.
+skill, the step's skill is replaced; with no height step at all, so is the one clearance from a
+point the code made up by that number (``avoid(t, [0, 0, 0], 0.1)`` for "hold a height of 0.1
+from the ground"). A review note says so.
 
 A number the words give as a change is no height at all: "descend by 0.1", "the path raised by
 0.2", "climb 0.3" move the path by that much (``clause_amounts.direction_amounts``), where the
@@ -22,7 +24,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.code_parse import DISTANCE_STEPS, assigned_call, in_place_of
 from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.words import NUMBER_TEXT
 
@@ -70,6 +72,8 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     skill, height = heights[0]
     lines = code.splitlines()
     step = _one_height_step(lines, height, options=False)
+    if step is None and not any(_height_step(x, options=True) for x in lines):
+        step = _clearance_from_a_made_up_point(lines, height)
     if step is None or step[1] == skill:
         return code, []
     line, changed = lines[step[0]], f"t = {skill}(t, {height:g})"
@@ -77,6 +81,26 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     return "\n".join(lines), [
         f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
     ]
+
+
+def _clearance_from_a_made_up_point(lines: list[str], height: float) -> tuple[int, str] | None:
+    """The one distance step from a point the code made up (``avoid(t, [0, 0, 0], 0.1)``) by the height.
+
+    "Hold a height of 0.1 from the ground" came back as a clearance of 0.1 from the origin, which
+    leaves the path where it was wherever it is more than 0.1 from that one point.
+    """
+    steps = []
+    for index, line in enumerate(lines):
+        found = assigned_call(line)
+        if found is None or found[2] not in DISTANCE_STEPS or len(found[1].args) < 3:
+            continue
+        point, amount = found[1].args[1], found[1].args[2]
+        made_up = isinstance(point, ast.List | ast.Tuple) and all(
+            isinstance(e, ast.Constant) for e in point.elts
+        )
+        if made_up and isinstance(amount, ast.Constant) and amount.value == height:
+            steps.append((index, found[2]))
+    return steps[0] if len(steps) == 1 else None
 
 
 def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:

@@ -149,20 +149,42 @@ def _placed_near(line: str, pace: ObjectAsk) -> str:
 
 
 def _moved_distance_steps(lines: list[str], notes: list[str], pace: ObjectAsk, place: ObjectAsk) -> None:
-    """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out."""
+    """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out.
+
+    A step that goes the way ``place`` asks (an ``avoid`` or ``move_away`` for "further", a
+    ``move_closer`` for "closer") with only amounts the clause states keeps them and changes its
+    object; any other becomes the asked step with the clause's vague word.
+    """
     steps = [i for i, x in enumerate(lines) if objects_of(call_of(x, DISTANCE_STEPS)) == [pace.name]]
     has_own = any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines)
+    wanted = ("move_closer",) if place.relation == "closer" else ("avoid", "move_away")
     for index in reversed(steps):
         before = lines[index].strip()
         if has_own:
             del lines[index]
             notes.append(f"left out `{before}`: the instruction asks only a pace near {pace.name}")
             continue
-        wanted = "move_closer" if place.relation == "closer" else "move_away"
-        word = intensity_word(place.clause)
-        after = f"t = {wanted}(t, detect_objects({place.name!r}){f', {word!r}' if word else ''})"
+        _, call, skill = assigned_call(lines[index])  # type: ignore[misc]
+        if skill in wanted and _amounts_stated(call, place.clause):
+            call.args[1] = _expression(f"detect_objects({place.name!r})")
+            after = f"t = {ast.unparse(call)}"
+        else:
+            word = intensity_word(place.clause)
+            after = f"t = {wanted[-1]}(t, detect_objects({place.name!r}){f', {word!r}' if word else ''})"
         lines[index] = in_place_of(lines[index], after)
         notes.append(f"`{before}` -> `{after}`: the instruction asks {asked_words(place)} {place.name}")
+
+
+def _amounts_stated(call: ast.Call, clause: str) -> bool:
+    """Whether every argument of a distance step after its point is a number the clause states."""
+    given = [*call.args[2:], *(k.value for k in call.keywords)]
+    numbers = stated_numbers(clause)
+    return all(
+        isinstance(v, ast.Constant)
+        and isinstance(v.value, int | float)
+        and is_stated(float(v.value), numbers)
+        for v in given
+    )
 
 
 def _stated_clearances(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:

@@ -17,6 +17,7 @@ from trajadapt.readers.words import (
     AWAY,
     CLOSER,
     FASTER,
+    MINIMUM_DISTANCE,
     NUMBER_TEXT,
     PLACE_WORDS,
     SLOWER,
@@ -30,7 +31,12 @@ NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?o
 KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
 )
-WITHIN = re.compile(rf"\bwithin\s+({NUMBER_TEXT})", re.I)
+WITHIN = re.compile(
+    rf"\b(?:within|(?:no|not)\s+(?:more|further|farther)\s+than|less\s+than)\s+({NUMBER_TEXT})"
+    r"(?:\s*(?:m|metres?|meters?|units?))?(?:\s+(?:away|off))?",
+    re.I,
+)
+"""A reach the words give for a speed change: "within 0.2", "no more than 0.2 away"."""
 
 
 @dataclass(frozen=True)
@@ -60,13 +66,16 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     if side and not CLOSER.search(clause):  # "just right of the bed" asks to come close on that side
         return ObjectAsk(name, "side", clause, side=side)
     if asks_pace(clause):
-        if not PLACE_WORDS.search(clause) or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
-            return None
-        if asks_distance(clause):  # "approach the lamp slowly": both, or a place?
-            return None
         within = WITHIN.search(clause)
+        placed = PLACE_WORDS.search(clause) or within
+        if not placed or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):
+            return None
+        if asks_distance(WITHIN.sub(" ", clause)):  # "approach the lamp slowly": both, or a place?
+            return None
         radius = float(within.group(1)) if within else None
         return ObjectAsk(name, "faster" if FASTER.search(clause) else "slower", clause, radius=radius)
+    if MINIMUM_DISTANCE.search(clause):  # "no closer than 0.2 to X", "a minimum clearance of 0.2 from X"
+        return ObjectAsk(name, "away", clause)
     closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
     if closer == away:
         return None

@@ -47,10 +47,12 @@ from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
     AWAY,
     CLOSER,
+    GOAL,
     NUMBER_TEXT,
     PART_OR_END,
     PAST_THE_GOAL,
     SPEED_WORDS,
+    START,
     directed_numbers,
     intensity_word,
     names_in,
@@ -59,16 +61,6 @@ from trajadapt.readers.words import (
 )
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
-START = re.compile(
-    r"\b(?:the\s+(?:start|beginning)\b|start(?:ing)?\s+(?:position|point|waypoint|pose|location)"
-    r"|initial\s+(?:position|point|waypoint|pose|location)|beginning)",
-    re.I,
-)
-GOAL = re.compile(
-    r"\b(?:the\s+goal\b|goal\s+(?:position|point|pose|location)|end(?:ing)?\s+(?:position|point|pose|location)"
-    r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
-    re.I,
-)
 SENTENCES = re.compile(r"[;!?]|\.(?!\d)|\b(?:then|but)\b", re.I)
 NEW_GOAL = re.compile(
     r"\bnew\s+(?:goal|end|destination)|\b(?:goal|destination)(?:\s+(?:position|point))?\s+(?:is|should be"

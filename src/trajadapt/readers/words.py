@@ -36,6 +36,19 @@ PATH_WORDS = re.compile(
 """Word stems that ask where the path goes (its place or shape), not how fast."""
 
 
+START = re.compile(
+    r"\b(?:the\s+(?:start|beginning)\b|start(?:ing)?\s+(?:position|point|waypoint|pose|location)"
+    r"|initial\s+(?:position|point|waypoint|pose|location)|beginning)",
+    re.I,
+)
+"""Words that name the path's start ("the start", "the initial position")."""
+GOAL = re.compile(
+    r"\b(?:the\s+goal\b|goal\s+(?:position|point|pose|location)|end(?:ing)?\s+(?:position|point|pose|location)"
+    r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
+    re.I,
+)
+"""Words that name the path's goal ("the goal", "the end point", "the destination")."""
+
 PART_OR_END = re.compile(
     r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
     r"|cent(?:er|re)|waypoints?|points?|part|section|segment|portion)\b",

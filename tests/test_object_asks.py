@@ -22,6 +22,7 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("give the lamp a wider berth", "Lamp", "away", None),
         ("ease off if the lamp is no more than 0.4 away", "Lamp", "slower", 0.4),
         ("speed up when less than 0.25 m from the sofa", "sofa", "faster", 0.25),
+        ("hurry inside 0.6 of the lamp", "Lamp", "faster", 0.6),
         ("keep no closer than 0.3 to the sofa", "sofa", "away", None),
         ("hold a minimum gap of 0.1 from the red box", "red box", "away", None),
     ],
@@ -211,3 +212,48 @@ def test_a_pace_placed_near_the_object_of_a_distance_clause_is_swapped(
 def test_paces_placed_where_asked_or_unclear_stay(words: str, steps: list[str]) -> None:
     code = CODE.format(step="\n".join(steps))
     assert replace_object_steps(code, [words], NAMES)[0] == code
+
+
+@pytest.mark.parametrize(
+    ("words", "steps", "expected"),
+    [
+        (  # a clearance kept from the object of a pause goes to the object a distance is asked of
+            "wait by the lamp for 5 steps, and give the sofa a wider berth",
+            ["t = avoid(t, detect_objects('Lamp'), 0.4)", "t = wait(t, detect_objects('Lamp'), 5)"],
+            ["t = move_away(t, detect_objects('sofa'))", "t = wait(t, detect_objects('Lamp'), 5)"],
+        ),
+        (  # a clearance from an object only a pace is asked near, with its speed step: out; its reach in
+            "stay 0.3 clear of the sofa. When the lamp is within 0.5, creep slower",
+            [
+                "t = avoid(t, detect_objects('sofa'), 0.3)",
+                "t = avoid(t, detect_objects('Lamp'), 0.5)",
+                "t = scale_speed(t, 0.6, near=detect_objects('Lamp'))",
+            ],
+            [
+                "t = avoid(t, detect_objects('sofa'), 0.3)",
+                "t = scale_speed(t, 0.6, near=detect_objects('Lamp'), radius=0.5)",
+            ],
+        ),
+        (  # a step against the asked way, beside one that goes it: out
+            "bring the route in toward the red box, then descend 0.1",
+            [
+                "t = move_closer(t, detect_objects('red box'))",
+                "t = move_away(t, detect_objects('red box'), 'a bit')",
+                "t = shift(t, 'down', 0.1)",
+            ],
+            ["t = move_closer(t, detect_objects('red box'))", "t = shift(t, 'down', 0.1)"],
+        ),
+    ],
+)
+def test_distance_steps_go_where_a_distance_is_asked(
+    words: str, steps: list[str], expected: list[str]
+) -> None:
+    code, notes = replace_object_steps(CODE.format(step="\n".join(steps)), [words], NAMES)
+    assert code == CODE.format(step="\n".join(expected))
+    assert notes
+
+
+def test_a_distance_asked_of_no_named_object_keeps_every_distance_step() -> None:
+    steps = "t = scale_speed(t, 0.6, near=detect_objects('Lamp'))\nt = move_away(t, detect_objects('Lamp'))"
+    code = CODE.format(step=steps)
+    assert replace_object_steps(code, ["slow down near the lamp and keep further from it"], NAMES)[0] == code

@@ -8,8 +8,8 @@ rather than a place ("above the lamp", "left of the box", "up to the lamp" are p
 to move that way, whatever else it asks ("go slightly upwards keeping a smaller distance from the
 chair"). When no step of the code has that direction or its opposite among its
 arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contradiction, which the
-effect report flags, not a dropped clause; a step that moves only the start or the goal counts
-neither way when the words name that end) nor, for up and down, sets a height, the reader adds
+effect report flags, not a dropped clause; a step that moves only the start or the goal the other way
+is no contradiction when the words name that end) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
 the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
@@ -39,9 +39,9 @@ the right" is one)."""
 NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
 END_STEPS = {"shift_goal": GOAL, "shift_start": START}
-"""Steps that move only an end, with the words that name it: where the words name that end, the step
-neither makes nor undoes a move of the whole path ("raise the path a little but move the goal down");
-where they do not, the model wrote the whole path's move as one (part-scope makes it a ``shift``)."""
+"""Steps that move only an end, with the words that name it: where the words name that end, a step the
+other way does not undo a move of the whole path ("raise the path a little but move the goal down");
+one the same way still makes it ("the goal is off; move it right": "it" is the goal)."""
 
 
 def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
@@ -49,7 +49,10 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     lines = code.splitlines()
     words = " ".join(asked)
     named = {step for step, end in END_STEPS.items() if end.search(words)}
-    moved = {direction for line in lines if called_name(line) not in named for direction in _directions(line)}
+    moved = {direction for line in lines for direction in _directions(line)}
+    against = {
+        direction for line in lines if called_name(line) not in named for direction in _directions(line)
+    }
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
     program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None:
@@ -59,7 +62,7 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     notes: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):
         direction = _asked_move(clause)
-        if direction is None or {direction, OPPOSITE_DIRECTIONS[direction]} & moved:
+        if direction is None or direction in moved or OPPOSITE_DIRECTIONS[direction] in against:
             continue
         if heights and direction in ("up", "down"):
             continue
@@ -67,6 +70,7 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
         step = f"{variable} = shift({variable}, {direction!r}{f', {word!r}' if word else ''})"
         added.append(step)
         moved.add(direction)
+        against.add(direction)
         notes.append(f"added `{step}`: the words ask to go {direction} ({clause.strip()!r}) and no step does")
     if not added:
         return code, []

@@ -49,6 +49,7 @@ from trajadapt.code_parse import (
     SPEED_STEPS,
     assigned_call,
     call_of,
+    called_name,
     detected_name,
     direction_argument,
     in_place_of,
@@ -58,10 +59,11 @@ from trajadapt.code_parse import (
     placed_near,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.object_words import ObjectAsk, asked_words, object_asks
+from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, object_asks
 from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
+    asks_distance,
     asks_pace,
     intensity_word,
     is_stated,
@@ -91,6 +93,9 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     asks = object_asks(words, names)
     lines, notes = code.splitlines(), list[str]()
     _crossed_objects(lines, notes, asks)
+    _distance_steps_where_asked(lines, notes, words, names)
+    _opposite_steps(lines, notes, asks)
+    _reach_of_paces(lines, notes, asks)
     changes_speed = any(call_of(line, SPEED_STEPS) is not None for line in lines)
     for ask in asks.values():
         if ask.relation in ("faster", "slower") and changes_speed:
@@ -149,30 +154,110 @@ def _placed_near(line: str, pace: ObjectAsk) -> str:
 
 
 def _moved_distance_steps(lines: list[str], notes: list[str], pace: ObjectAsk, place: ObjectAsk) -> None:
-    """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out.
-
-    A step that goes the way ``place`` asks (an ``avoid`` or ``move_away`` for "further", a
-    ``move_closer`` for "closer") with only amounts the clause states keeps them and changes its
-    object; any other becomes the asked step with the clause's vague word.
-    """
-    steps = [i for i, x in enumerate(lines) if objects_of(call_of(x, DISTANCE_STEPS)) == [pace.name]]
+    """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out."""
+    steps = [i for i, x in enumerate(lines) if _sole_object(x) == pace.name.casefold()]
     has_own = any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines)
-    wanted = ("move_closer",) if place.relation == "closer" else ("avoid", "move_away")
     for index in reversed(steps):
-        before = lines[index].strip()
         if has_own:
+            notes.append(
+                f"left out `{lines[index].strip()}`: the instruction asks only a pace near {pace.name}"
+            )
             del lines[index]
-            notes.append(f"left out `{before}`: the instruction asks only a pace near {pace.name}")
-            continue
-        _, call, skill = assigned_call(lines[index])  # type: ignore[misc]
-        if skill in wanted and _amounts_stated(call, place.clause):
-            call.args[1] = _expression(f"detect_objects({place.name!r})")
-            after = f"t = {ast.unparse(call)}"
         else:
-            word = intensity_word(place.clause)
-            after = f"t = {wanted[-1]}(t, detect_objects({place.name!r}){f', {word!r}' if word else ''})"
-        lines[index] = in_place_of(lines[index], after)
-        notes.append(f"`{before}` -> `{after}`: the instruction asks {asked_words(place)} {place.name}")
+            _retarget(lines, notes, index, place)
+
+
+def _retarget(lines: list[str], notes: list[str], index: int, place: ObjectAsk) -> None:
+    """The distance step at ``index`` made the one ``place`` asks, on its object.
+
+    A step that goes the asked way (an ``avoid`` or ``move_away`` for "further", a ``move_closer``
+    for "closer") with only amounts the clause states keeps them and changes its object; any other
+    becomes the asked step with the clause's vague word.
+    """
+    before = lines[index].strip()
+    _, call, skill = assigned_call(lines[index])  # type: ignore[misc]
+    if skill in WAYS[place.relation] and _amounts_stated(call, place.clause):
+        call.args[1] = _expression(f"detect_objects({place.name!r})")
+        after = f"t = {ast.unparse(call)}"
+    else:
+        word = intensity_word(place.clause)
+        amount = f", {word!r}" if word else ""
+        after = f"t = {WAYS[place.relation][-1]}(t, detect_objects({place.name!r}){amount})"
+    lines[index] = in_place_of(lines[index], after)
+    notes.append(f"`{before}` -> `{after}`: the instruction asks {asked_words(place)} {place.name}")
+
+
+WAYS = {"closer": ("move_closer",), "away": ("avoid", "move_away")}
+"""The distance steps that go the way each relation asks."""
+
+
+def _sole_object(line: str) -> str:
+    """The one object a distance step is on (casefolded), or '' for any other line."""
+    found = objects_of(call_of(line, DISTANCE_STEPS))
+    return found[0].casefold() if len(found) == 1 else ""
+
+
+def _distance_steps_where_asked(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
+    """Distance steps on objects no clause asks a distance of: moved, or left out beside a pace.
+
+    Such a step goes to the one object a clause asks a distance of and no step moves by ("halt
+    near the fan, keep a greater distance from the bottle" -> ``avoid(fan)`` becomes
+    ``move_away(bottle)``); on an object a clause asks only a pace near, with its speed step there,
+    it leaves. A distance asked with no object named ("keep away from it") leaves every step alone.
+    """
+    asks, clauses = object_asks(words, names), split_clauses(words, names)
+    if any(_asks_a_distance(c) and not names_in(c, names) for c in clauses):
+        return
+    asked = {n.casefold() for c in clauses if _asks_a_distance(c) for n in names_in(c, names)}
+
+    def strays() -> list[int]:
+        return [i for i, x in enumerate(lines) if _sole_object(x) and _sole_object(x) not in asked]
+
+    for place in (a for a in asks.values() if a.relation in WAYS):
+        if not any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines) and len(strays()) == 1:
+            _retarget(lines, notes, strays()[0], place)
+    paced = {a.name.casefold() for a in asks.values() if a.relation in ("faster", "slower")}
+    placed = {(placed_near(call_of(x, SPEED_STEPS)) or "").casefold() for x in lines}
+    for index in reversed(strays()):
+        if _sole_object(lines[index]) in paced & placed:
+            notes.append(
+                f"left out `{lines[index].strip()}`: the instruction asks only a pace near that object"
+            )
+            del lines[index]
+
+
+def _reach_of_paces(lines: list[str], notes: list[str], asks: dict[str, ObjectAsk]) -> None:
+    """A speed step near an object with no radius, where the clause gives one ("within 0.2"): given it."""
+    for pace in (a for a in asks.values() if a.radius is not None):
+        for index, line in enumerate(lines):
+            call = call_of(line, SPEED_STEPS)
+            if (placed_near(call) or "").casefold() != pace.name.casefold() or call is None:
+                continue
+            if any(k.arg == "radius" for k in call.keywords) or len(call.args) > 3:
+                continue
+            call.keywords.append(ast.keyword("radius", ast.Constant(pace.radius)))
+            after = f"t = {ast.unparse(call)}"
+            notes.append(f"`{line.strip()}` -> `{after}`: the instruction gives the reach {pace.radius:g}")
+            lines[index] = in_place_of(line, after)
+
+
+def _asks_a_distance(clause: str) -> bool:
+    """Whether a clause asks to come closer, further or a least distance ("within 0.2" is a place)."""
+    return asks_distance(WITHIN.sub(" ", clause)) or MINIMUM_DISTANCE.search(clause) is not None
+
+
+def _opposite_steps(lines: list[str], notes: list[str], asks: dict[str, ObjectAsk]) -> None:
+    """Steps on an object that go against what its clause asks, beside one that goes the asked way: out."""
+    for place in (a for a in asks.values() if a.relation in WAYS):
+        other = WAYS["away" if place.relation == "closer" else "closer"]
+        on = place.name.casefold()
+        if not any(_sole_object(x) == on and called_name(x) in WAYS[place.relation] for x in lines):
+            continue
+        for index in reversed(range(len(lines))):
+            if _sole_object(lines[index]) == on and called_name(lines[index]) in other:
+                notes.append(f"left out `{lines[index].strip()}`: the instruction asks {asked_words(place)} "
+                             f"{place.name}, and another step does")  # fmt: skip
+                del lines[index]
 
 
 def _amounts_stated(call: ast.Call, clause: str) -> bool:

@@ -32,11 +32,11 @@ KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
 )
 WITHIN = re.compile(
-    rf"\b(?:within|(?:no|not)\s+(?:more|further|farther)\s+than|less\s+than)\s+({NUMBER_TEXT})"
+    rf"\b(?:within|inside|(?:no|not)\s+(?:more|further|farther)\s+than|less\s+than)\s+({NUMBER_TEXT})"
     r"(?:\s*(?:m|metres?|meters?|units?))?(?:\s+(?:away|off))?",
     re.I,
 )
-"""A reach the words give for a speed change: "within 0.2", "no more than 0.2 away"."""
+"""A reach the words give for a speed change: "within 0.2", "inside 0.2 of", "no more than 0.2 away"."""
 
 
 @dataclass(frozen=True)

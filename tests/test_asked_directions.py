@@ -51,6 +51,8 @@ def test_a_dropped_direction_becomes_the_first_step(words: str, steps: tuple[str
         ("go left of the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # a place
         ("ease up when the sofa is near", ("t = scale_speed(t, 0.65, near=detect_objects('Sofa'))",)),
         ("fly up to the lamp", ("t = move_closer(t, detect_objects('lamp'))",)),  # "up to": a place
+        # "it" is the named end: its move the same way makes the clause
+        ("The end point sits too low. Lift it 0.05.", ("t = shift_goal(t, 'up', 0.05)",)),
     ],
 )
 def test_directions_already_moved_places_parts_and_paces_add_nothing(
@@ -104,3 +106,17 @@ def test_an_answer_the_readers_cannot_follow_is_left_alone() -> None:
 def test_over_to_a_side_is_a_move_not_a_place(words: str, shift: str) -> None:
     code, _ = read_against_words(program("t = smooth(t)"), [words], NAMES)
     assert shift in code.splitlines()
+
+
+def test_the_readers_do_not_read_a_statement_of_the_problem_as_a_request() -> None:
+    """'too slow ... keeps well away' states the problem; read as asks they are the opposite of the fix."""
+    words = (
+        "It is too slow within 0.3 of the lamp and keeps well away from the sofa. "
+        "Hurry up inside 0.3 of the lamp, and come in nearer to the sofa."
+    )
+    code = program("t = avoid(t, detect_objects('lamp'), 0.3)", "t = move_closer(t, detect_objects('Sofa'))")
+    read, _ = read_against_words(code, [words], NAMES)
+    assert read.splitlines()[1:3] == [
+        "t = scale_speed(t, 1.4, near=detect_objects('lamp'), radius=0.3)",
+        "t = move_closer(t, detect_objects('Sofa'))",
+    ]

@@ -48,6 +48,8 @@ def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> Non
         "raise your margin around the lamp",
         "keep the same height the whole way",
         "at a height of 0.5",
+        "speed things up past the lamp",  # a pace verb with its object between
+        "slow the robot down there",
     ],
 )
 def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> None:

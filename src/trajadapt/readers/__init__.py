@@ -21,6 +21,7 @@ from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
+from trajadapt.readers.clause_split import without_statements
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
@@ -95,8 +96,10 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     """``code`` after every reader in ``READERS`` order, and each change as a note naming its reader.
 
     ``asked`` holds the user's words (the instruction, then each feedback); ``names`` the scene's
-    object names.
+    object names. A sentence that only says how the path is now ("it's too slow near the lamp")
+    is no request, and the readers do not read it (``clause_split.without_statements``).
     """
+    asked = [without_statements(words, names) for words in asked]
     notes: list[ReaderNote] = []
     for reader in READERS:
         code, found = reader.read(code, asked, names)

@@ -71,11 +71,12 @@ reached"."""
 
 
 PACE_PHRASES = re.compile(
-    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)\s+(?:down|up)\b",
+    r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)"
+    r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this)\s+)?(?:down|up)\b",
     re.I,
 )
-"""Phrasal verbs of pace whose particle is no direction ("slow down", "speed up", "ease up"; "pick up
-the pace" is a word before a speed, which ``said_directions`` already leaves out)."""
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease
+up"; "pick up the pace" is a word before a speed, which ``said_directions`` already leaves out)."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""

@@ -193,9 +193,7 @@ def test_steps_the_words_agree_with_stay(step: str, words: str) -> None:
 def test_a_pace_placed_near_the_object_of_a_distance_clause_is_swapped(
     words: str, steps: list[str], expected: list[str]
 ) -> None:
-    code, notes = replace_object_steps(CODE.format(step="\n".join(steps)), [words], NAMES)
-    assert code == CODE.format(step="\n".join(expected))
-    assert notes
+    assert_replaced(words, steps, expected)
 
 
 @pytest.mark.parametrize(
@@ -248,6 +246,11 @@ def test_paces_placed_where_asked_or_unclear_stay(words: str, steps: list[str]) 
 def test_distance_steps_go_where_a_distance_is_asked(
     words: str, steps: list[str], expected: list[str]
 ) -> None:
+    assert_replaced(words, steps, expected)
+
+
+def assert_replaced(words: str, steps: list[str], expected: list[str]) -> None:
+    """The steps read against the words are the expected ones, with a note saying why."""
     code, notes = replace_object_steps(CODE.format(step="\n".join(steps)), [words], NAMES)
     assert code == CODE.format(step="\n".join(expected))
     assert notes

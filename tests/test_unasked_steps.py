@@ -37,6 +37,7 @@ def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: s
         ("walk slower near the sandal", "t = scale_speed(t, 0.5, near=detect_objects('sandal'))"),
         ("cruise at a steady 0.3 the whole way", "t = set_speed(t, 0.3)"),  # a speed said as a number
         ("go past the goal by 0.2", "t = extend(t, 0.2)"),
+        ("the path ends too soon; keep moving a bit once you arrive", "t = extend(t)"),
         ("after reaching the goal go straight to the door", "t = append_segment(t, detect_objects('door'))"),
         ("pause 5 timesteps at the end", "t = wait(t, 'goal', 5)"),
         ("revolve once around the piano", "t = circle_around(t, detect_objects('piano'))"),

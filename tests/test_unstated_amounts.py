@@ -81,6 +81,8 @@ def test_numbers_written_as_words_count() -> None:
         ("go slightly upwards and a bit faster", "t = scale_speed(t, 1.6)", 1.25),
         ("go faster", "t = scale_speed(t, 2.5)", 1.4),
         ("go a lot to the left and slower", "t = scale_speed(t, 0.3)", 0.65),  # 'a lot' is the shift's
+        # the statement of the problem says no amount of the fix
+        ("It's too slow near the box; go a lot faster by it", "t = scale_speed(t, 1.3)", 1.6),
     ],
 )
 def test_a_made_up_speed_factor_becomes_the_phrase_tables(

@@ -296,6 +296,11 @@ REQUESTING = re.compile(
 SENTENCE = re.compile(r"[;!?]|\.(?!\d)")
 
 
+def is_statement(words: str) -> bool:
+    """Whether the words only say how the path is now ("it's too slow near the lamp"): no request."""
+    return bool(STATEMENT.match(words.strip())) and not REQUESTING.search(words)
+
+
 def without_statements(instruction: str, names: Sequence[str] = ()) -> str:
     """The instruction less the sentences that only say how the path is now, where nothing is lost.
 
@@ -306,7 +311,7 @@ def without_statements(instruction: str, names: Sequence[str] = ()) -> str:
     right." keeps both); the instruction is kept whole when nothing else would remain.
     """
     sentences = [x.strip() for x in SENTENCE.split(instruction) if x.strip()]
-    stated = [x for x in sentences if STATEMENT.match(x) and not REQUESTING.search(x)]
+    stated = [x for x in sentences if is_statement(x)]
     rest = [x for x in sentences if x not in stated]
     kept = {n.casefold() for x in rest for n in _referents(x, names)}
     dropped = [x for x in stated if all(n.casefold() in kept for n in _referents(x, names))]

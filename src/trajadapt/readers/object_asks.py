@@ -31,7 +31,10 @@ second, and the code places its one speed step near the second object and none n
 ("go faster within 0.3 of the ear and move closer to the tin opener" -> ``move_closer(ear)``,
 ``scale_speed(t, 1.4, near=tin opener)``), the speed step moves to the first object (with the
 clause's radius), and a distance step on the first object goes to the second, or leaves when the
-second has its own.
+second has its own. More generally, a distance step on an object no clause asks a distance of goes
+to the one object a clause asks one of and no step moves by, or leaves where that object's pace is
+already placed; a step against the asked way beside one that goes it leaves; a pace's stated reach
+("within 0.2", "no more than 0.2 away") is given to its speed step.
 
 An object that two clauses ask different things of is left alone, and so is every step the words
 agree with. A review note says what was replaced and why. Measured on stored answers in

@@ -132,6 +132,8 @@ def in_place_of(line: str, new: str) -> str:
 DISTANCE_STEPS = ("avoid", "move_away", "move_closer")
 SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
 """Steps that change the distance to an object, and steps that change the speed."""
+PLACED_SPEED_STEPS = ("scale_speed", "set_speed")
+"""Speed steps that take a place (``near=``)."""
 
 
 def objects_of(call: ast.Call | None) -> list[str]:
@@ -145,7 +147,7 @@ def objects_of(call: ast.Call | None) -> list[str]:
 
 def placed_near(call: ast.Call | None) -> str | None:
     """The object a ``scale_speed`` / ``set_speed`` step is placed near (its ``near`` point), if named."""
-    if call is None or not isinstance(call.func, ast.Name) or call.func.id not in SPEED_STEPS[:2]:
+    if call is None or not isinstance(call.func, ast.Name) or call.func.id not in PLACED_SPEED_STEPS:
         return None
     near = next((k.value for k in call.keywords if k.arg == "near"), None)
     point = near if near is not None else (call.args[2] if len(call.args) > 2 else None)

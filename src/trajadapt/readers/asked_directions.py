@@ -49,10 +49,9 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     lines = code.splitlines()
     words = " ".join(asked)
     named = {step for step, end in END_STEPS.items() if end.search(words)}
-    moved = {direction for line in lines for direction in _directions(line)}
-    against = {
-        direction for line in lines if called_name(line) not in named for direction in _directions(line)
-    }
+    steps = [(called_name(line), _directions(line)) for line in lines]
+    moved = {direction for _, directions in steps for direction in directions}
+    against = {direction for name, directions in steps if name not in named for direction in directions}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
     program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None:

@@ -32,6 +32,7 @@ from collections.abc import Sequence
 from trajadapt.readers.words import (
     GOAL,
     PLACE_WORDS,
+    SENTENCE_END,
     START,
     asked_kinds,
     asks_distance,
@@ -293,7 +294,6 @@ REQUESTING = re.compile(
     re.I,
 )
 """Words that make a sentence about the path a request ("it should stop at the goal")."""
-SENTENCE = re.compile(r"[;!?]|\.(?!\d)")
 
 
 def is_statement(words: str) -> bool:
@@ -310,7 +310,7 @@ def without_statements(instruction: str, names: Sequence[str] = ()) -> str:
     the rest, so that the request keeps what "it" and "there" stand for ("The goal is off. Move it
     right." keeps both); the instruction is kept whole when nothing else would remain.
     """
-    sentences = [x.strip() for x in SENTENCE.split(instruction) if x.strip()]
+    sentences = [x.strip() for x in SENTENCE_END.split(instruction) if x.strip()]
     stated = [x for x in sentences if is_statement(x)]
     rest = [x for x in sentences if x not in stated]
     kept = {n.casefold() for x in rest for n in _referents(x, names)}

@@ -60,6 +60,7 @@ from trajadapt.code_parse import (
     on_object,
     parse_code,
     placed_near,
+    step_on_object,
 )
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, object_asks
@@ -96,7 +97,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     asks = object_asks(words, names)
     lines, notes = code.splitlines(), list[str]()
     _crossed_objects(lines, notes, asks)
-    _distance_steps_where_asked(lines, notes, words, names)
+    _distance_steps_where_asked(lines, notes, asks, words, names)
     _opposite_steps(lines, notes, asks)
     _reach_of_paces(lines, notes, asks)
     changes_speed = any(call_of(line, SPEED_STEPS) is not None for line in lines)
@@ -127,8 +128,7 @@ def _crossed_objects(lines: list[str], notes: list[str], asks: dict[str, ObjectA
     pace, place = paced[0], placed[0]
 
     def speed_near(name: str) -> list[int]:
-        return [i for i, x in enumerate(lines) if (placed_near(call_of(x, SPEED_STEPS)) or "").casefold()
-                == name.casefold()]  # fmt: skip
+        return [i for i, x in enumerate(lines) if _paced_object(x) == name.casefold()]
 
     crossed = speed_near(place.name)
     if speed_near(pace.name) or len(crossed) != 1:
@@ -159,7 +159,7 @@ def _placed_near(line: str, pace: ObjectAsk) -> str:
 def _moved_distance_steps(lines: list[str], notes: list[str], pace: ObjectAsk, place: ObjectAsk) -> None:
     """Distance steps on the object only a pace is asked near: onto ``place``'s object, or left out."""
     steps = [i for i, x in enumerate(lines) if _sole_object(x) == pace.name.casefold()]
-    has_own = any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines)
+    has_own = any(step_on_object(x, place.name) for x in lines)
     for index in reversed(steps):
         if has_own:
             notes.append(
@@ -200,7 +200,14 @@ def _sole_object(line: str) -> str:
     return found[0].casefold() if len(found) == 1 else ""
 
 
-def _distance_steps_where_asked(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
+def _paced_object(line: str) -> str:
+    """The object a speed step is placed near (casefolded), or '' for any other line."""
+    return (placed_near(call_of(line, SPEED_STEPS)) or "").casefold()
+
+
+def _distance_steps_where_asked(
+    lines: list[str], notes: list[str], asks: dict[str, ObjectAsk], words: str, names: list[str]
+) -> None:
     """Distance steps on objects no clause asks a distance of: moved, or left out beside a pace.
 
     Such a step goes to the one object a clause asks a distance of and no step moves by ("halt
@@ -208,7 +215,7 @@ def _distance_steps_where_asked(lines: list[str], notes: list[str], words: str, 
     ``move_away(bottle)``); on an object a clause asks only a pace near, with its speed step there,
     it leaves. A distance asked with no object named ("keep away from it") leaves every step alone.
     """
-    asks, clauses = object_asks(words, names), split_clauses(words, names)
+    clauses = split_clauses(words, names)
     if any(_asks_a_distance(c) and not names_in(c, names) for c in clauses):
         return
     asked = {n.casefold() for c in clauses if _asks_a_distance(c) for n in names_in(c, names)}
@@ -217,10 +224,10 @@ def _distance_steps_where_asked(lines: list[str], notes: list[str], words: str, 
         return [i for i, x in enumerate(lines) if _sole_object(x) and _sole_object(x) not in asked]
 
     for place in (a for a in asks.values() if a.relation in WAYS):
-        if not any(on_object(call_of(x, DISTANCE_STEPS), place.name) for x in lines) and len(strays()) == 1:
+        if not any(step_on_object(x, place.name) for x in lines) and len(strays()) == 1:
             _retarget(lines, notes, strays()[0], place)
     paced = {a.name.casefold() for a in asks.values() if a.relation in ("faster", "slower")}
-    placed = {(placed_near(call_of(x, SPEED_STEPS)) or "").casefold() for x in lines}
+    placed = {_paced_object(x) for x in lines}
     for index in reversed(strays()):
         if _sole_object(lines[index]) in paced & placed:
             notes.append(
@@ -234,7 +241,7 @@ def _reach_of_paces(lines: list[str], notes: list[str], asks: dict[str, ObjectAs
     for pace in (a for a in asks.values() if a.radius is not None):
         for index, line in enumerate(lines):
             call = call_of(line, SPEED_STEPS)
-            if (placed_near(call) or "").casefold() != pace.name.casefold() or call is None:
+            if call is None or _paced_object(line) != pace.name.casefold():
                 continue
             if any(k.arg == "radius" for k in call.keywords) or len(call.args) > 3:
                 continue

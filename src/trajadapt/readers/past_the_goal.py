@@ -45,7 +45,7 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import PAST_THE_GOAL, longest_names, names_in, said_directions
+from trajadapt.readers.words import PAST_THE_GOAL, SENTENCE_END, longest_names, names_in, said_directions
 from trajadapt.sandbox.api import GOAL_NAMES
 from trajadapt.skills import SKILL_NAMES
 
@@ -62,7 +62,6 @@ EXTENDING = re.compile(r"\b(?:extend\w*|lengthen\w*|prolong\w*)\b(?!.*\d)", re.I
 """A clause that lengthens the path, with no number: the path goes on past its goal, where it says."""
 WHOLE_PATH = re.compile(r"\b(?:path|trajectory|route|whole|entire|start\w*|first)\b", re.I)
 """A clause that speaks of the path as a whole or of its beginning is no longer after the goal."""
-SENTENCE_END = re.compile(r"[.;!?](?!\d)")
 MOVED_TO_GOAL = ("move_closer", "move_away", "pass_through", "pass_over", "reach", "stop_at")
 SHIFTS = ("shift", "shift_goal")
 AT_THE_END = ("wait", "spiral", "circle_around")

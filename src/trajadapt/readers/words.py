@@ -36,6 +36,9 @@ PATH_WORDS = re.compile(
 """Word stems that ask where the path goes (its place or shape), not how fast."""
 
 
+SENTENCE_END = re.compile(r"[.;!?](?!\d)")
+"""Where a sentence ends: a full stop (not a decimal point), a semicolon, "!" or "?"."""
+
 START = re.compile(
     r"\b(?:the\s+(?:start|beginning)\b|start(?:ing)?\s+(?:position|point|waypoint|pose|location)"
     r"|initial\s+(?:position|point|waypoint|pose|location)|beginning)",

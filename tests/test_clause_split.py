@@ -1,6 +1,6 @@
 import pytest
 
-from trajadapt.readers.clause_split import only_keeps, split_clauses, without_statements
+from trajadapt.readers.clause_split import only_keeps, split_clauses
 
 NAMES = ["box", "chair", "table", "lamp", "red mug"]
 
@@ -191,25 +191,3 @@ def test_a_piece_that_asks_more_than_the_one_before_is_a_clause(words, clauses):
 )
 def test_a_clause_that_only_keeps_something(clause, keeps):
     assert only_keeps(clause, NAMES) is keeps
-
-
-@pytest.mark.parametrize(
-    ("words", "kept"),
-    [
-        # a statement of the problem whose objects the fix names again: not read as a request
-        (
-            "It's far too quick beside the red mug. Ease off beside the red mug.",
-            "Ease off beside the red mug.",
-        ),
-        ("Currently the route hugs the chair; give the chair more room", "give the chair more room."),
-        ("The path dips too low. Raise it by 0.2!", "Raise it by 0.2."),
-        # the statement holds what "it" or "there" stands for, or asks itself: kept whole
-        ("It cuts too wide of the lamp; bring it in closer.", None),
-        ("The end point sits too far left. Move it 0.1 right.", None),
-        ("The path should stay low. Go left by 0.1.", None),
-        ("It is too slow.", None),  # nothing else would remain
-        ("go left by 20 and slow down near the box", None),
-    ],
-)
-def test_a_statement_of_the_problem_is_not_a_request(words, kept):
-    assert without_statements(words, NAMES) == (words if kept is None else kept)

@@ -89,6 +89,7 @@ def test_no_reader_imports_another_reader() -> None:
         "trajadapt.readers.words",
         "trajadapt.readers.object_words",
         "trajadapt.readers.clause_split",
+        "trajadapt.readers.request_words",
         "trajadapt.readers.paces",
         "trajadapt.readers.clause_amounts",
         "trajadapt.readers",

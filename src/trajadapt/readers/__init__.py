@@ -21,13 +21,13 @@ from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
-from trajadapt.readers.clause_split import without_statements
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
+from trajadapt.readers.request_words import request_words
 from trajadapt.readers.scaled_distances import scale_distances
 from trajadapt.readers.speed_profiles import profile_paces
 from trajadapt.readers.speed_scope import localize_speed
@@ -97,10 +97,17 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
 
     ``asked`` holds the user's words (the instruction, then each feedback); ``names`` the scene's
     object names. A sentence that only says how the path is now ("it's too slow near the lamp")
-    is no request, and the readers do not read it (``clause_split.without_statements``).
+    is no request, and the readers do not read it (``request_words``).
     """
-    asked = [without_statements(words, names) for words in asked]
-    notes: list[ReaderNote] = []
+    requests = [request_words(words, names) for words in asked]
+    notes = [
+        ReaderNote(
+            "request-words", f"read as the request: \u201c{request}\u201d (the rest says how the path is now)"
+        )
+        for words, request in zip(asked, requests, strict=True)
+        if request != words
+    ]
+    asked = requests
     for reader in READERS:
         code, found = reader.read(code, asked, names)
         notes += [ReaderNote(reader.name, message) for message in found]

@@ -30,10 +30,7 @@ import re
 from collections.abc import Sequence
 
 from trajadapt.readers.words import (
-    GOAL,
     PLACE_WORDS,
-    SENTENCE_END,
-    START,
     asked_kinds,
     asks_distance,
     names_in,
@@ -274,53 +271,3 @@ def only_keeps(clause: str, names: Sequence[str] = ()) -> bool:
         and not names_in(clause, names)
         and not re.search(r"\d", clause)
     )
-
-
-STATEMENT = re.compile(
-    r"^(?:(?:right now|currently|at the moment|at present|as it is|now)\s*,?\s*)?"
-    r"(?:(?:around|near|by|past|at|in|on|within|inside|close to|next to)\b[^,]*?,?\s*)?"
-    r"(?:it|this|that|there|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|drone|arm|waypoints?|goal|end|start"
-    r"|starting|final|middle|first|last|speed|pace|motion)\b[\w\s]*?)"
-    r"(?:'s|\s+(?:is|isn't|are|aren't|was|does|doesn't|does not|do not|don't|never|just|only|still|runs|sits"
-    r"|passes|goes|stops|ends|gets|keeps|misses|moves|comes|stays|hits|cuts|swings|drifts|hugs|dips|rises"
-    r"|lies|looks|seems|feels|travels|heads|follows|takes|makes|has|hovers|flies|drives|walks))\b",
-    re.I,
-)
-"""A sentence that says how the path is now ("it's too fast near the lamp", "the path sits a bit low",
-"right now it stops at the goal"): feedback's statement of the problem, not a request."""
-
-REQUESTING = re.compile(
-    r"\b(?:should|must|needs? to|has to|have to|ought|want|would like|could you|can you|please|let it)\b",
-    re.I,
-)
-"""Words that make a sentence about the path a request ("it should stop at the goal")."""
-
-
-def is_statement(words: str) -> bool:
-    """Whether the words only say how the path is now ("it's too slow near the lamp"): no request."""
-    return bool(STATEMENT.match(words.strip())) and not REQUESTING.search(words)
-
-
-def without_statements(instruction: str, names: Sequence[str] = ()) -> str:
-    """The instruction less the sentences that only say how the path is now, where nothing is lost.
-
-    A sentence that states the problem ("It runs too close to the lamp. Raise the path by 0.1.")
-    asks nothing, and its words read as requests would ask the opposite of the fix ("too slow" is
-    no "slower"). It leaves only when every object and end of the path it names is named again in
-    the rest, so that the request keeps what "it" and "there" stand for ("The goal is off. Move it
-    right." keeps both); the instruction is kept whole when nothing else would remain.
-    """
-    sentences = [x.strip() for x in SENTENCE_END.split(instruction) if x.strip()]
-    stated = [x for x in sentences if is_statement(x)]
-    rest = [x for x in sentences if x not in stated]
-    kept = {n.casefold() for x in rest for n in _referents(x, names)}
-    dropped = [x for x in stated if all(n.casefold() in kept for n in _referents(x, names))]
-    if not dropped or len(dropped) == len(sentences):
-        return instruction
-    return ". ".join(x for x in sentences if x not in dropped) + "."
-
-
-def _referents(sentence: str, names: Sequence[str]) -> list[str]:
-    """The objects a sentence names, and 'start' / 'goal' where it names an end of the path."""
-    ends = [end for end, words in (("start", START), ("goal", GOAL)) if words.search(sentence)]
-    return [*names_in(sentence, names), *ends]

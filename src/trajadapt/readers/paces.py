@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from trajadapt.readers.clause_split import is_statement, split_clauses
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import SPEED_WORDS, amount_size
 from trajadapt.skills.speed import SPEED_FACTORS
 

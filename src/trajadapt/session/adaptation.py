@@ -145,7 +145,7 @@ class AdaptationSession(Conversation):
                 skill_hints(plan.code, failed.message) if self.settings.mode == "skills" else ""
             )
             self.messages.append(ChatMessage("user", render(
-                "repair", problem=problem, instruction=self.case.instruction
+                "repair", problem=problem, instruction=self.request
             )))  # fmt: skip
             try:
                 plan = self._ask("repair", failed.message)
@@ -171,7 +171,7 @@ class AdaptationSession(Conversation):
         kept = self._mark()
         problems = "\n".join(f"- {flag}" for flag in flags)
         self.messages.append(ChatMessage("user", render(
-            "contradiction", problems=problems, instruction=self.case.instruction
+            "contradiction", problems=problems, instruction=self.request
         )))  # fmt: skip
         try:
             second = self._ask("repair", "; ".join(flags))
@@ -199,7 +199,7 @@ class AdaptationSession(Conversation):
             f"- the step for \u201c{clause}\u201d: {'; '.join(found)}" for clause, found in first
         )
         self.messages.append(ChatMessage("user", render(
-            "clause_contradiction", problems=problems, instruction=self.case.instruction
+            "clause_contradiction", problems=problems, instruction=self.request
         )))  # fmt: skip
         try:
             second = self._ask("draft", problems, first=True)
@@ -223,7 +223,7 @@ class AdaptationSession(Conversation):
         that admits one to two steps per request. The answer with fewer findings is kept, as if it had
         been the first; the other leaves only a note (the log keeps both).
         """
-        asking = asking_clauses(split_clauses(self.case.instruction, self._names), self._names)
+        asking = asking_clauses(split_clauses(self.request, self._names), self._names)
         first = shape_findings(plan.code, asking)
         if not first:
             return plan

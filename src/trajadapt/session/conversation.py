@@ -23,6 +23,7 @@ from trajadapt.model.case import Case
 from trajadapt.prompts import chosen_examples, first_messages, render
 from trajadapt.readers import ReaderNote, read_against_words
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.request_words import request_words
 from trajadapt.safe_text import ANSWER_CHARS, INSTRUCTION_CHARS, safe_text
 from trajadapt.sandbox.runner import Sandbox
 from trajadapt.session.log import SessionLog
@@ -57,9 +58,12 @@ class Conversation:
         self.on_progress = on_progress or (lambda _message: None)
         remembered = memory.examples() if memory is not None else []
         s = self.settings
-        chosen = chosen_examples(case, s.mode, s.examples, remembered, s.retrieval)
+        self.request = request_words(case.instruction, case.scene.names())
+        """What the model is asked: the instruction less what it only says about the path as it is now."""
+        asked = case.with_instruction(self.request)
+        chosen = chosen_examples(asked, s.mode, s.examples, remembered, s.retrieval)
         self.messages: list[ChatMessage] = list(
-            first_messages(case, s.axes, s.mode, s.waypoints_in_prompt, chosen=chosen)
+            first_messages(asked, s.axes, s.mode, s.waypoints_in_prompt, chosen=chosen)
         )
         self.turns: list[Turn] = []
         self.recalled_examples = tuple(example for example in chosen if example.remembered)
@@ -105,8 +109,8 @@ class Conversation:
         self._asked.append(text)
         self.messages.append(ChatMessage("user", render(
             "feedback",
-            feedback=text.strip(),
-            instruction=self.case.instruction,
+            feedback=request_words(text.strip(), self._names),
+            instruction=self.request,
             previous_plan=previous.numbered() or "(no plan)",
         )))  # fmt: skip
         return self._ask("feedback", text.strip())
@@ -139,7 +143,7 @@ class Conversation:
             return None
         if not self.backend.follows_grammar:
             return None
-        clauses = split_clauses(self.case.instruction, self._names)
+        clauses = split_clauses(self.request, self._names)
         return clauses if len(clauses) <= MAX_CLAUSES else None
 
     def _mark(self) -> Mark:
@@ -174,7 +178,7 @@ class Conversation:
                 if retry >= self.settings.format_retries:
                     raise
                 self.messages.append(ChatMessage("user", render(
-                    "retry_format", problem=str(exc), instruction=self.case.instruction
+                    "retry_format", problem=str(exc), instruction=self.request
                 )))  # fmt: skip
                 kind, user_text = "format-retry", str(exc)
                 continue

@@ -33,6 +33,10 @@ PARAPHRASES = Path(__file__).parent / "data" / "paraphrases"
         # a part of the path, a place to start from
         ("The last third is too fast. Slow down there.", "Slow down in the last third."),
         ("It halts at the goal; from there, loop around the chair", "from the goal, loop around the chair."),
+        # an opener that asks nothing
+        ("No, go left by 0.3", "go left by 0.3."),
+        ("Close, but keep further from the lamp", "keep further from the lamp."),
+        ("Nope - go right. Hmm.", "go right."),
         # a question about the path, an opener
         ("Why does it halt right at the goal? Carry on 0.3 past the goal.", "Carry on 0.3 past the goal."),
         (
@@ -65,6 +69,8 @@ def test_the_statement_leaves_and_pointing_back_is_written_out(words, read):
         "Go faster - it's too slow near the lamp",  # the place is said only in the reason
         "Why not go left by 0.3?",  # a suggestion
         "don't go near the lamp",  # an imperative, not a question
+        "Close to the lamp, slow down",  # a place, not an opener
+        "No more than 0.2 from the lamp",
     ],
 )
 def test_words_are_kept_whole_where_something_would_be_lost(words):

@@ -9,7 +9,8 @@ neither the model nor the readers are shown it: both read ``request_words``.
 A statement leaves only where nothing is lost: every object and end of the path it names is named
 again in the rest, or the rest points back to its one object or end ("near it", "from that one",
 "there", "bring it in closer"), and those words are then written out ("near the wolf", "at the
-mug"). Anything else keeps the words whole, exactly as said.
+mug"). Anything else keeps the words whole, exactly as said. A word that only opens the feedback
+("No, ...", "Close, but ...", "Hmm.") leaves too: read as a clause, it would ask for a step.
 """
 
 from __future__ import annotations
@@ -20,8 +21,8 @@ from collections.abc import Sequence
 from trajadapt.readers.words import GOAL, SENTENCE_END, START, names_in
 
 _OPENER = (
-    r"(?:(?:right now|currently|at the moment|at present|as it is|now|so|well|hmm+|no|nope|not quite|close"
-    r"|oops|wait|ok|okay|sorry|honestly|also|and|but|though|still)\s*[,:\-\u2013\u2014]?\s+)*"
+    r"(?:(?:right now|currently|at the moment|at present|as it is|now|so|honestly|also|and|but|though|still)"
+    r"\s*[,:\-\u2013\u2014]?\s+)*"
 )
 _WHERE = (
     r"(?:(?:around|near|by|past|at|in|on|within|inside|close to|next to|when|whenever|while)\b[^,]*?,\s*)?"
@@ -55,7 +56,7 @@ REASON = re.compile(r"\s+[-\u2013\u2014]+\s+|\s*[\u2013\u2014]\s*|,?\s+\b(?:beca
 
 def is_statement(words: str) -> bool:
     """Whether the words only say how the path is now ("it's too slow near the lamp"): no request."""
-    return bool(STATEMENT.match(words.strip())) and not REQUESTING.search(words)
+    return bool(STATEMENT.match(OPENER.sub("", words.strip()))) and not REQUESTING.search(words)
 
 
 def request_words(instruction: str, names: Sequence[str] = ()) -> str:
@@ -66,9 +67,10 @@ def request_words(instruction: str, names: Sequence[str] = ()) -> str:
     >>> request_words("Go left by 0.2 and slow down near the box", ["box"])
     'Go left by 0.2 and slow down near the box'
     """
-    sentences = _sentences(instruction)
+    sentences = [s for s in (OPENER.sub("", s) for s in _sentences(instruction)) if s]
+    opened = sentences != _sentences(instruction)
     stated = [s for s in sentences if is_statement(s)]
-    if not stated or len(stated) == len(sentences):
+    if not sentences or len(stated) == len(sentences) or not (stated or opened):
         return instruction
     missing = {n for s in stated for n in _referents(s, names)} - _said(sentences, stated, names)
     if len(missing) == 1:
@@ -76,9 +78,18 @@ def request_words(instruction: str, names: Sequence[str] = ()) -> str:
         sentences = [s if s in stated else _written_out(s, referent, names) for s in sentences]
     said = _said(sentences, stated, names)
     dropped = [s for s in stated if all(n in said for n in _referents(s, names))]
-    if not dropped:
+    if not (dropped or opened):
         return instruction
     return ". ".join(s for s in sentences if s not in dropped) + "."
+
+
+OPENER = re.compile(
+    r"^(?:no|nope|nah|not quite|not really|not yet|hmm+|close|almost|nearly|oops|wait|ok|okay|well|sorry"
+    r"|actually|yes|yeah|wrong|that's (?:wrong|not right|not it|off|close|better))"
+    r"(?:\s*,?\s*but\s+|\s*[,:;!\-\u2013\u2014]+\s*|\s*$)",
+    re.I,
+)
+"""A word that opens feedback and asks nothing: "No, ...", "Not quite: ...", "Close, but ...", "Hmm, ..."."""
 
 
 def _said(sentences: list[str], stated: list[str], names: Sequence[str]) -> set[str]:

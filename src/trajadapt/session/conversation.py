@@ -109,7 +109,7 @@ class Conversation:
         self._asked.append(text)
         self.messages.append(ChatMessage("user", render(
             "feedback",
-            feedback=request_words(text.strip(), self._names),
+            feedback=text.strip(),
             instruction=self.request,
             previous_plan=previous.numbered() or "(no plan)",
         )))  # fmt: skip

@@ -30,6 +30,7 @@ PARAPHRASES = Path(__file__).parent / "data" / "paraphrases"
             "Lift the path by 0.1 over the chair.",
         ),
         ("Move left 0.2 because the path is too far right", "Move left 0.2."),
+        ("Near the chair it's far too quick. Ease off a lot there.", "Ease off a lot near the chair."),
         # a part of the path, a place to start from
         ("The last third is too fast. Slow down there.", "Slow down in the last third."),
         ("It halts at the goal; from there, loop around the chair", "from the goal, loop around the chair."),
@@ -70,6 +71,7 @@ def test_the_statement_leaves_and_pointing_back_is_written_out(words, read):
         "Why not go left by 0.3?",  # a suggestion
         "don't go near the lamp",  # an imperative, not a question
         "Close to the lamp, slow down",  # a place, not an opener
+        "Whenever you pass near the lamp, walk faster",  # a condition, not a statement
         "No more than 0.2 from the lamp",
     ],
 )

@@ -24,9 +24,9 @@ _OPENER = (
     r"(?:(?:right now|currently|at the moment|at present|as it is|now|so|honestly|also|and|but|though|still)"
     r"\s*[,:\-\u2013\u2014]?\s+)*"
 )
-_WHERE = (
-    r"(?:(?:around|near|by|past|at|in|on|within|inside|close to|next to|when|whenever|while)\b[^,]*?,\s*)?"
-)
+_PLACE = r"(?:around|near|by|past|at|in|on|within|inside|close to|next to)"
+_WHERE = rf"(?:(?:{_PLACE}|when|whenever|while)\b[^,]*?,\s*|{_PLACE}\s+the\s[^,]*?\s)?"
+"""Where the statement is about, said first: "near the lamp, it ...", "around the chair it's ..."."""
 _SUBJECT = r"(?:it|this|that|there|you|the(?:\s+[\w'-]+){1,5}?)"
 _STATE_VERBS = (
     r"(?:(?:just|only|still|always|really|clearly|barely|currently|never|now|also)\s+)?"

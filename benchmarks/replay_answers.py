@@ -24,6 +24,7 @@ from trajadapt.llm.answer import answer_json
 from trajadapt.model.case import Case, load_case
 from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import describe_environment
+from trajadapt.readers.request_words import request_words
 from trajadapt.session import SessionSettings
 
 
@@ -53,8 +54,12 @@ class StoredAnswers(Backend):
 
 
 def request_key(case: Case) -> tuple[str, str]:
-    """What a request's task text holds for ``case``: its environment and its instruction line."""
-    return describe_environment(case), "INSTRUCTION: " + case.instruction
+    """What a request's task text holds for ``case``: its environment and its instruction line.
+
+    The line holds the request the model is shown (``request_words``: the words less what they only
+    say about the path now), which is the instruction itself unless it states a problem.
+    """
+    return describe_environment(case), "INSTRUCTION: " + request_words(case.instruction, case.scene.names())
 
 
 def replay_settings(axes: str, read_against_words: bool = True) -> SessionSettings:

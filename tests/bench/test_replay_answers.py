@@ -42,3 +42,17 @@ def test_a_replay_starts_from_the_models_answer_not_from_the_readers_code(
     del record["answer"]  # a result from before answers were kept: the readers' code is all there is
     (stored / "left.result.json").write_text(json.dumps(record))
     assert not any("extend" in note for note in _replayed_notes(stored, cases, tmp_path / "older"))
+
+
+def test_a_replay_finds_the_answer_to_words_that_state_a_problem(tmp_path: Path, ovita_dir: Path) -> None:
+    """The model is shown the request, not the statement of the problem: the replay looks it up so."""
+    case = json.loads((ovita_dir / "latte_subset" / "latte_32.json").read_text())
+    case["instruction"] = "It sits too far right. Go to the left."
+    cases = tmp_path / "cases"
+    cases.mkdir()
+    (cases / "left.json").write_text(json.dumps(case))
+    stored = tmp_path / "stored"
+    run_benchmark(
+        discover_cases([cases]), ScriptedBackend(answers=[LEFT_AND_MORE]), BenchConfig(out_dir=stored)
+    )
+    assert any("extend" in note for note in _replayed_notes(stored, cases, tmp_path / "again"))

@@ -6,7 +6,9 @@ skill constants, projection, the judges) on exactly the answers a run got: each 
 request, with no repair round. Older results have only the plan and code after the readers, so
 their replay starts from what the readers of that run made (a lower bound for a new reader).
 
-Run: .venv/bin/python benchmarks/replay_answers.py STORED_OUT CASES... --out NEW_OUT [--memory BANK]
+Run: .venv/bin/python benchmarks/replay_answers.py STORED CASES... --out NEW_OUT [--memory BANK]
+STORED is a bench output folder, or a file of kept answers (``benchmarks/keep_answers.py``; the
+model's answers of recent runs are kept in ``benchmarks/answers/``).
 Then compare: .venv/bin/python benchmarks/compare_runs.py STORED_OUT NEW_OUT
 """
 
@@ -19,7 +21,7 @@ from typing import Any
 
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
-from trajadapt.bench.runner import BenchConfig, discover_cases, result_path, run_benchmark
+from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
 from trajadapt.llm.answer import answer_json
 from trajadapt.model.case import Case, load_case
 from trajadapt.model.geometry import AXIS_CONVENTIONS
@@ -74,12 +76,29 @@ def _answer_after_readers(record: dict[str, Any]) -> str:
     return answer_json(plan or "1) (no plan)", record.get("code") or "")
 
 
+def _stored_results(folder: Path) -> dict[str, tuple[str, str]]:
+    """(axes, answer) of each case a bench output folder holds a result of, by case key."""
+    stored = {}
+    for path in folder.rglob("*.result.json"):
+        record = json.loads(path.read_text())
+        axes = (record.get("settings") or {}).get("axes", "paper")
+        key = str(path.relative_to(folder)).removesuffix(".result.json")
+        stored[key] = (axes, record.get("answer") or _answer_after_readers(record))
+    return stored
+
+
+def _kept_answers(path: Path) -> dict[str, tuple[str, str]]:
+    """(axes, answer) by case key from a file of kept answers (``benchmarks/keep_answers.py``)."""
+    lines = [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    return {line["case"]: (line.get("axes", "paper"), line["answer"]) for line in lines}
+
+
 def main() -> None:
     """Replay every stored answer and write the new results, summary and report."""
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
-    parser.add_argument("stored", type=Path)
+    parser.add_argument("stored", type=Path, help="a bench output folder, or a file of kept answers")
     parser.add_argument("cases", nargs="+", type=Path)
     parser.add_argument("--out", type=Path, required=True)
     parser.add_argument("--memory", type=Path, default=None,
@@ -92,15 +111,12 @@ def main() -> None:
     if args.out.exists() and any(args.out.iterdir()):
         parser.error(f"{args.out} is not empty: the runner would keep its results instead of replaying; "
                      "give a new folder")  # fmt: skip
-    stored_config = BenchConfig(out_dir=args.stored)
+    stored = _kept_answers(args.stored) if args.stored.is_file() else _stored_results(args.stored)
     answers, replayed, axes = [], [], "paper"
     for case in discover_cases(args.cases):
-        path = result_path(stored_config, case)
-        if not path.is_file():
+        if case.key not in stored:
             continue
-        record = json.loads(path.read_text())
-        axes = (record.get("settings") or {}).get("axes", axes)
-        answer = record.get("answer") or _answer_after_readers(record)
+        axes, answer = stored[case.key]
         answers.append((request_key(load_case(case.path)), answer))
         replayed.append(case)
     settings = replay_settings(axes, read_against_words=not args.no_readers)

@@ -12,6 +12,7 @@ from trajadapt.backends.scripted import ScriptedBackend
 from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
 
 REPLAY = Path(__file__).resolve().parents[2] / "benchmarks" / "replay_answers.py"
+KEEP = Path(__file__).resolve().parents[2] / "benchmarks" / "keep_answers.py"
 LEFT_AND_MORE = json.dumps(
     {
         "high_level_plan": "1) Shift left. 2) Extend.",
@@ -56,3 +57,20 @@ def test_a_replay_finds_the_answer_to_words_that_state_a_problem(tmp_path: Path,
         discover_cases([cases]), ScriptedBackend(answers=[LEFT_AND_MORE]), BenchConfig(out_dir=stored)
     )
     assert any("extend" in note for note in _replayed_notes(stored, cases, tmp_path / "again"))
+
+
+def test_kept_answers_replay_as_the_folder_does(tmp_path: Path, ovita_dir: Path) -> None:
+    """The small file of kept answers stands in for the bench output folder."""
+    cases = tmp_path / "cases"
+    cases.mkdir()
+    shutil.copy(ovita_dir / "latte_subset" / "latte_32.json", cases / "left.json")
+    stored = tmp_path / "stored"
+    run_benchmark(
+        discover_cases([cases]), ScriptedBackend(answers=[LEFT_AND_MORE]), BenchConfig(out_dir=stored)
+    )
+    kept = tmp_path / "answers.jsonl"
+    subprocess.run([sys.executable, str(KEEP), str(kept), str(stored)], check=True, capture_output=True)
+    assert json.loads(kept.read_text())["answer"] == LEFT_AND_MORE
+    assert _replayed_notes(kept, cases, tmp_path / "from-file") == _replayed_notes(
+        stored, cases, tmp_path / "again"
+    )

@@ -14,8 +14,10 @@ from __future__ import annotations
 import argparse
 import json
 import statistics
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from trajadapt.bench.halves import HALVES, half_of
 
@@ -30,18 +32,25 @@ class Outcome:
     code: str = ""
 
 
+def stored_results(folder: Path) -> Iterator[tuple[str, dict[str, Any]]]:
+    """Each result under a bench output ``folder`` with its case key: its path less the suffix."""
+    for path in sorted(folder.rglob("*.result.json")):
+        yield (
+            str(path.relative_to(folder)).removesuffix(".result.json"),
+            json.loads(path.read_text(encoding="utf-8")),
+        )
+
+
 def load_outcomes(folder: Path, first_answers: bool) -> dict[str, Outcome]:
     """Judged results under ``folder``, keyed by their path relative to it (without the suffix)."""
     outcomes = {}
-    for path in sorted(folder.rglob("*.result.json")):
-        result = json.loads(path.read_text(encoding="utf-8"))
+    for key, result in stored_results(folder):
         evaluation = result.get("evaluation") or {}
         if not evaluation.get("judged"):
             continue
         passed = bool(evaluation.get("passed"))
         if first_answers and result.get("repair_rounds", 0):
             passed = False
-        key = str(path.relative_to(folder)).removesuffix(".result.json")
         outcomes[key] = Outcome(
             passed=passed,
             llm_s=float((result.get("timings_s") or {}).get("llm") or 0.0),

@@ -15,23 +15,21 @@ import json
 from pathlib import Path
 from typing import Any
 
+from compare_runs import stored_results  # benchmarks/, beside this script
+
 
 def kept_lines(folder: Path) -> dict[str, dict[str, Any]]:
     """One line per result of ``folder`` that keeps the model's answer, by case key."""
-    lines = {}
-    for path in sorted(folder.rglob("*.result.json")):
-        record = json.loads(path.read_text())
-        if not record.get("answer"):
-            continue
-        key = str(path.relative_to(folder)).removesuffix(".result.json")
-        axes = (record.get("settings") or {}).get("axes", "paper")
-        lines[key] = {
+    return {
+        key: {
             "case": key,
-            "axes": axes,
+            "axes": (record.get("settings") or {}).get("axes", "paper"),
             "instruction": record.get("instruction"),
             "answer": record["answer"],
         }
-    return lines
+        for key, record in stored_results(folder)
+        if record.get("answer")
+    }
 
 
 def main() -> None:

@@ -19,6 +19,8 @@ import json
 from pathlib import Path
 from typing import Any
 
+from compare_runs import stored_results  # benchmarks/, beside this script
+
 from trajadapt.backends.base import Backend, ChatRequest, Completion
 from trajadapt.bench.report import write_report
 from trajadapt.bench.runner import BenchConfig, discover_cases, run_benchmark
@@ -78,13 +80,13 @@ def _answer_after_readers(record: dict[str, Any]) -> str:
 
 def _stored_results(folder: Path) -> dict[str, tuple[str, str]]:
     """(axes, answer) of each case a bench output folder holds a result of, by case key."""
-    stored = {}
-    for path in folder.rglob("*.result.json"):
-        record = json.loads(path.read_text())
-        axes = (record.get("settings") or {}).get("axes", "paper")
-        key = str(path.relative_to(folder)).removesuffix(".result.json")
-        stored[key] = (axes, record.get("answer") or _answer_after_readers(record))
-    return stored
+    return {
+        key: (
+            (record.get("settings") or {}).get("axes", "paper"),
+            record.get("answer") or _answer_after_readers(record),
+        )
+        for key, record in stored_results(folder)
+    }
 
 
 def _kept_answers(path: Path) -> dict[str, tuple[str, str]]:

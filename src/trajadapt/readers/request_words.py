@@ -67,8 +67,9 @@ def request_words(instruction: str, names: Sequence[str] = ()) -> str:
     >>> request_words("Go left by 0.2 and slow down near the box", ["box"])
     'Go left by 0.2 and slow down near the box'
     """
-    sentences = [s for s in (OPENER.sub("", s) for s in _sentences(instruction)) if s]
-    opened = sentences != _sentences(instruction)
+    said_so = _sentences(instruction)
+    sentences = [s for s in (OPENER.sub("", s) for s in said_so) if s]
+    opened = sentences != said_so
     stated = [s for s in sentences if is_statement(s)]
     if not sentences or len(stated) == len(sentences) or not (stated or opened):
         return instruction
@@ -140,11 +141,11 @@ TOWARDS = frozenset({"closer", "nearer", "tighter"})
 def _written_out(sentence: str, referent: str, names: Sequence[str]) -> str:
     """``sentence`` with the words that point back to ``referent`` written out as its name."""
     the = f"the {referent}"
+    sentence = TO_THERE.sub(lambda m: f"{_motion(m.group(1))} {the}", sentence)
     if PART.fullmatch(referent):  # a part of the path: only "there" can point back to it
-        return THERE.sub(f"in {the}", TO_THERE.sub(lambda m: f"{_motion(m.group(1))} {the}", sentence))
+        return THERE.sub(f"in {the}", sentence)
     sentence = BACK_TO_IT.sub(lambda m: f"{m.group(1)} {the}", sentence)
     sentence = THAT_ONE.sub(the, sentence)
-    sentence = TO_THERE.sub(lambda m: f"{_motion(m.group(1))} {the}", sentence)
     sentence = THERE.sub(f"at {the}" if referent in ("start", "goal") else f"near {the}", sentence)
     ending = COMPARATIVE_AT_END.search(sentence)
     if ending and not names_in(sentence, names):

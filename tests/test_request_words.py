@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from trajadapt.readers.plain_words import plain_words
 from trajadapt.readers.request_words import is_statement, request_words
 
 NAMES = ["lamp", "red mug", "chair", "Person"]
@@ -69,7 +70,7 @@ def test_the_statement_leaves_and_pointing_back_is_written_out(words, read):
         "The path is too low.",  # nothing but the statement
         "Go faster - it's too slow near the lamp",  # the place is said only in the reason
         "Why not go left by 0.3?",  # a suggestion
-        "don't go near the lamp",  # an imperative, not a question
+        "don't go left of the lamp",  # an imperative, not a question
         "Close to the lamp, slow down",  # a place, not an opener
         "Whenever you pass near the lamp, walk faster",  # a condition, not a statement
         "No more than 0.2 from the lamp",
@@ -114,18 +115,28 @@ def _reworded_sets() -> list[Path]:
 
 @pytest.mark.parametrize("path", _reworded_sets(), ids=lambda p: p.stem)
 def test_requests_that_state_no_problem_are_read_as_said(path):
-    """The sets written as requests read as said, but for sentences that only set the scene.
+    """The sets written as requests read as said in plain form, but for sentences that only set the scene.
 
     Probe L's instructions give reasons ("The damselfly is easily scared; walk much slower around
     the damselfly"): such a sentence leaves whole, and nothing else of the words changes.
     """
     data = json.loads(path.read_text())
     sets = [data["paraphrases"]] if "paraphrases" in data else list(data["sets"].values())
-    changed = [(words, request_words(words, [])) for reworded in sets for words in reworded.values()]
+    plain = [plain_words(words, [], is_statement) for reworded in sets for words in reworded.values()]
+    changed = [(words, request_words(words, [])) for words in plain]
     changed = [(words, read) for words, read in changed if read != words]
     for words, read in changed:
         assert set(_sentences(read)) < set(_sentences(words))
     assert len(changed) == (5 if path.stem == "probe-l" else 0)
+
+
+def test_the_original_instructions_are_read_exactly_as_said(ovita_dir):
+    """OVITA's own words hold no list, number in words, short name or negated comparison to rewrite."""
+    for path in sorted(ovita_dir.rglob("*.json")):
+        case = json.loads(path.read_text())
+        names = [o["name"] if isinstance(o, dict) else str(o) for o in case.get("objects") or []]
+        words = case.get("instruction") or ""
+        assert request_words(words, names) == words, path.stem
 
 
 def _sentences(words: str) -> list[str]:

@@ -24,6 +24,7 @@ from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
+from trajadapt.readers.object_mentions import chosen_referents
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
@@ -97,16 +98,22 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
 
     ``asked`` holds the user's words (the instruction, then each feedback); ``names`` the scene's
     object names. A sentence that only says how the path is now ("it's too slow near the lamp")
-    is no request, and the readers do not read it (``request_words``).
+    is no request, and the readers do not read it (``request_words``); an object called by a name
+    no scene object has is read as the one the answer chose (``chosen_referents``).
     """
     requests = [request_words(words, names) for words in asked]
     notes = [
         ReaderNote(
-            "request-words", f"read as the request: \u201c{request}\u201d (the rest says how the path is now)"
+            "request-words",
+            f"read as the request: \u201c{request}\u201d"
+            " (the words in plain form, less what only says how the path is now)",
         )
         for words, request in zip(asked, requests, strict=True)
         if request != words
     ]
+    for index, request in enumerate(requests):
+        requests[index], found = chosen_referents(request, code, names)
+        notes += [ReaderNote("object-mentions", message) for message in found]
     asked = requests
     for reader in READERS:
         code, found = reader.read(code, asked, names)

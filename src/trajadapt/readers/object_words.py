@@ -27,7 +27,7 @@ from trajadapt.readers.words import (
     names_in,
 )
 
-NOT_SIDE = re.compile(r"\b(?:not|never|n't|avoid)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
+NOT_SIDE = re.compile(r"(?:\b(?:not|never|avoid)|n't)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
 KEEP_SIDE = re.compile(
     r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
 )

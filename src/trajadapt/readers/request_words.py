@@ -11,6 +11,8 @@ again in the rest, or the rest points back to its one object or end ("near it", 
 "there", "bring it in closer"), and those words are then written out ("near the wolf", "at the
 mug"). Anything else keeps the words whole, exactly as said. A word that only opens the feedback
 ("No, ...", "Close, but ...", "Hmm.") leaves too: read as a clause, it would ask for a step.
+Before that, the words are put in plain form (``readers.plain_words``: lists, decimals in words,
+short names of objects, what not to do said as what to do).
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from trajadapt.readers.plain_words import plain_words
 from trajadapt.readers.words import GOAL, SENTENCE_END, START, names_in
 
 _OPENER = (
@@ -60,13 +63,16 @@ def is_statement(words: str) -> bool:
 
 
 def request_words(instruction: str, names: Sequence[str] = ()) -> str:
-    """The instruction less the sentences that only say how the path is now, where nothing is lost.
+    """The instruction in plain words, less the sentences that only say how the path is now.
+
+    The plain words are ``plain_words``'; a sentence leaves only where nothing is lost.
 
     >>> request_words("It's far too slow near the wolf. Pick up the pace near it.", ["wolf"])
     'Pick up the pace near the wolf.'
     >>> request_words("Go left by 0.2 and slow down near the box", ["box"])
     'Go left by 0.2 and slow down near the box'
     """
+    instruction = plain_words(instruction, names, is_statement)
     said_so = _sentences(instruction)
     sentences = [s for s in (OPENER.sub("", s) for s in said_so) if s]
     opened = sentences != said_so

@@ -1,0 +1,170 @@
+"""The user's words in the plain form the model and the readers read: what they say, said one way.
+
+People write a request in many forms that ask the same thing. Four of them hide what is asked from
+a small model and from word-reading code alike, so they are written out once, before anything reads
+the words:
+
+- steps given as a list ("1) go up 2) slow down", "- go up" on its own line) become sentences, so
+  that a list number is never read as an amount;
+- a number said in words with a decimal point ("zero point three", "point two") becomes digits;
+- an object called by one word of its scene name ("the husky" for "Siberian husky", "the remote"
+  for "remote_controller") is called by its full name, where no other object of the scene has that
+  word;
+- a comparison said as what not to do ("don't walk so close to the lamp", "don't keep as much
+  distance from the barn", "don't rush near the box", "don't go as slow in the middle", "don't keep
+  going") is said as what to do ("walk further from the lamp", "keep less distance from the barn",
+  "slow down near the box", "go faster in the middle", "stop"). A negation of a plain pace ("don't
+  slow down") or of a limit ("don't go faster than 2") is left as said: it asks no change.
+
+Where none of these forms occurs the words are returned exactly as said.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Sequence
+
+from trajadapt.readers.words import whole_words
+
+LIST_MARK = re.compile(r"(?:^|(?<=\n))[ \t]*(?:\d{1,2}[.)]|[-*\u2022])[ \t]+|(?<=\s)\d{1,2}\)[ \t]+", re.M)
+"""A list item's mark: "1)" or "2." or "-" or "*" opening a line, or "2)" inside one."""
+
+_DIGITS = {
+    "zero": "0", "nought": "0", "oh": "0", "one": "1", "two": "2", "three": "3", "four": "4",
+    "five": "5", "six": "6", "seven": "7", "eight": "8", "nine": "9",
+}  # fmt: skip
+_DIGIT = "|".join(_DIGITS)
+DECIMAL_IN_WORDS = re.compile(rf"\b(?:({_DIGIT})\s+)?point((?:\s+(?:{_DIGIT}))+)\b", re.I)
+"""A decimal said in words: "zero point three", "point two five", "one point five"."""
+_CARDINALS = {**_DIGITS, "ten": "10", "twenty": "20"}
+AMOUNT_IN_WORDS = re.compile(
+    rf"\b(?:by\s+(?=(?:{'|'.join(_CARDINALS)})\b(?!\s+(?:times|of)\b))|within\s+)({'|'.join(_CARDINALS)})\b"
+    rf"|\b({'|'.join(_CARDINALS)})(?=\s+(?:units?|metres?|meters?)\b)",
+    re.I,
+)
+"""A whole amount said in words where it is a distance: "by three", "within two of", "two units"."""
+
+NOT_OBJECT_WORDS = frozenset(
+    "goal start end path trajectory route way point points waypoint waypoints middle side top bottom "
+    "front back left right speed line half section part corner edge centre center area region position "
+    "height level ground floor object obstacle robot drone arm base first last other one red blue green "
+    "yellow black white small large big little old new".split()
+)
+"""Words that name no object by themselves, even where a scene name holds them ("goal post")."""
+SHORTEST_NAME_WORD = 3
+
+_NEGATION = r"\b(?:do\s+not|does\s+not|did\s+not|don't|doesn't|didn't|never|not|shouldn't|mustn't|won't)\s+"
+_DEGREE = r"(?:(?:quite|nearly|anywhere\s+near|anything\s+like|remotely|all)\s+)?(?:so|as|too|that)\s+"
+_RELATION_WORDS = (
+    r"(?:so|as|too|that|quite|nearly|anywhere|anything|remotely|close\w*|near\w*|far\w*|further|away"
+    r"|fast\w*|quick\w*|rapid\w*|slow\w*|rush\w*|hurr\w*|speed\w*|rac\w*|zoom\w*|distance|stop\w*|than"
+    r"|left|right|up|down|forwards?|back\w*|higher|lower|above|below|over|under)"
+)
+_VERB_WORDS = rf"((?:(?!{_RELATION_WORDS}\b)[a-z']+\s+){{0,4}}?)"
+_ASKS = {
+    "further": (rf"(?:{_DEGREE})?(?:close(?:ly)?|near)(?:\s+(?:to|by))?\b", "further from"),
+    "less": (rf"{_DEGREE}much\s+(?P<gap>distance|space|room|clearance|gap|margin)\b", "less {gap}"),
+    "closer": (rf"(?:{_DEGREE})?far(?:\s+away)?\s+from\b", "closer to"),
+    "slower": (rf"{_DEGREE}(?:fast|quick(?:ly)?|rapid(?:ly)?|speedily|hastily)\b", "slower"),
+    "slow_down": (r"(?:rush|hurry|race|zoom)\w*\b", "slow down"),
+    "faster": (rf"{_DEGREE}slow(?:ly)?\b", "faster"),
+    "stop": (r"(?:keep\s+(?:going|moving)|carry\s+on)\b", "stop"),
+}
+NEGATED_ASK = re.compile(
+    _NEGATION
+    + _VERB_WORDS
+    + "(?:"
+    + "|".join(f"(?P<{key}>{pattern})" for key, (pattern, _) in _ASKS.items())
+    + ")",
+    re.I,
+)
+"""A negation, at most four words that ask nothing of pace or distance, then what is negated: each
+kind in ``_ASKS`` with what the negation asks instead ("don't walk so close to" -> "walk further from")."""
+LIMIT = re.compile(r"^\s*than\b", re.I)
+
+
+def plain_words(words: str, names: Sequence[str], keep: Callable[[str], bool]) -> str:
+    """``words`` with lists, decimals in words, short names and negated comparisons written plainly.
+
+    ``keep`` says which sentences to leave as said (those that only state how the path is now, where
+    a negation is no request: "it doesn't slow down near the lamp").
+
+    >>> plain_words("1) go up by point two 2) don't walk so close to the husky", ["Siberian husky"], bool)
+    "go up by 0.2. walk further from the Siberian husky."
+    """
+    plain = _decimals_in_digits(_list_as_sentences(words))
+    plain = _full_names(plain, names)
+    return _negations_as_asks(plain, keep)
+
+
+def _list_as_sentences(words: str) -> str:
+    """The items of a list as sentences: "1) a 2) b" -> "a. b."."""
+    if not LIST_MARK.search(words):
+        return words
+    items = [item.strip(" \t\n,;") for item in LIST_MARK.split(words)]
+    items = [item for item in items if item]
+    return " ".join(item if item[-1] in ".!?:" else f"{item}." for item in items)
+
+
+def _decimals_in_digits(words: str) -> str:
+    """Decimals said in words as digits: "zero point three" -> "0.3"."""
+
+    def digits(found: re.Match[str]) -> str:
+        whole = _DIGITS[found.group(1).lower()] if found.group(1) else "0"
+        return whole + "." + "".join(_DIGITS[d.lower()] for d in found.group(2).split())
+
+    words = DECIMAL_IN_WORDS.sub(digits, words)
+    return AMOUNT_IN_WORDS.sub(_amount_in_digits, words)
+
+
+def _amount_in_digits(found: re.Match[str]) -> str:
+    """A whole amount in digits: 'by three' -> 'by 3', 'two units' -> '2 units'."""
+    if found.group(1):
+        return found.group(0)[: found.start(1) - found.start()] + _CARDINALS[found.group(1).lower()]
+    return _CARDINALS[found.group(2).lower()]
+
+
+def _full_names(words: str, names: Sequence[str]) -> str:
+    """``words`` with "the <word>" written as the one scene name that holds the word."""
+    text = whole_words(words)
+    owners: dict[str, list[str]] = {}
+    for name in names:
+        for word in set(whole_words(name).split()):
+            owners.setdefault(word, []).append(name)
+    for name in names:
+        parts = whole_words(name).split()
+        if len(parts) < 2 or whole_words(name) in text:
+            continue
+        for part in parts:
+            if len(part) < SHORTEST_NAME_WORD or part in NOT_OBJECT_WORDS or len(owners[part]) > 1:
+                continue
+            short = re.compile(rf"\b(the\s+){re.escape(part)}(?:s|es)?\b", re.I)
+            words, found = short.subn(_called(name), words)
+            if found:
+                break
+    return words
+
+
+def _called(name: str) -> Callable[[re.Match[str]], str]:
+    """The replacement of "the <word>" by "the <name>"."""
+    return lambda found: found.group(1) + name
+
+
+def _negations_as_asks(words: str, keep: Callable[[str], bool]) -> str:
+    """``words`` with each negated comparison said as what it asks, but in sentences to ``keep``."""
+
+    def said(found: re.Match[str]) -> str:
+        if LIMIT.match(words[found.end() :]) or keep(_sentence_at(words, found.start())):
+            return found.group(0)
+        kind = next(key for key in _ASKS if found.group(key))
+        asked = (found.group(1) or "") + _ASKS[kind][1].format(gap=found.group("gap") or "")
+        return asked[:1].upper() + asked[1:] if found.group(0)[:1].isupper() else asked
+
+    return NEGATED_ASK.sub(said, words)
+
+
+def _sentence_at(words: str, index: int) -> str:
+    """The sentence of ``words`` that holds ``index``."""
+    start = max(words.rfind(mark, 0, index) for mark in ".;!?") + 1
+    ends = [e for e in (words.find(mark, index) for mark in ".;!?") if e >= 0]
+    return words[start : min(ends) if ends else len(words)].strip()

@@ -92,7 +92,8 @@ def test_a_word_two_objects_share_or_no_object_is_called_is_kept(words):
         ("don't hover quite so far from the table lamp", "hover closer to the table lamp"),
         ("never go that fast around the red mug", "go slower around the red mug"),
         ("Don't hurry through the last stretch", "Slow down through the last stretch"),
-        ("don't crawl along nearly as slowly past the lamp", "crawl along faster past the table lamp"),
+        ("don't crawl along nearly as slowly past the lamp", "crawl along a lot faster past the table lamp"),
+        ("not anything like as close to the red mug, please", "a lot further from the red mug, please"),
         ("do not carry on after the goal", "stop after the goal"),
     ],
 )

@@ -139,3 +139,18 @@ def test_a_made_up_factor_takes_the_one_pace_the_words_ask(
     """Session 13: the direction comes from the words when they ask one pace, else from the model."""
     code, notes = replace_unstated_amounts(START + step + END, [instruction])
     assert steps(code) == [expected] and notes
+
+
+@pytest.mark.parametrize(
+    ("words", "made_up", "stated"),
+    [
+        ("keep left and cut the pace by half", 0.45, 0.5),
+        ("cruise twice as quickly along the whole route", 1.7, 2.0),
+        ("go 30% slower after the lamp", 0.5, 0.7),
+    ],
+)
+def test_a_made_up_factor_becomes_the_one_the_words_state(words, made_up, stated):
+    code = f"t = get_trajectory()\nt = scale_speed(t, {made_up})\nmodified_trajectory = t"
+    read, notes = replace_unstated_amounts(code, [words])
+    assert f"scale_speed(t, {stated})" in read
+    assert "the factor the words state" in notes[0]

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import re
+
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.request_words import is_statement
-from trajadapt.readers.words import SPEED_WORDS, amount_size
+from trajadapt.readers.words import NUMBER_TEXT, NUMBER_WORDS, SPEED_WORDS, amount_size
 from trajadapt.skills.speed import SPEED_FACTORS
 
 
@@ -15,6 +17,47 @@ def speed_factor(words: str, faster: bool) -> float:
     clause ("go left a lot and walk faster") does not count, and not one that only says how the
     path is now ("it's way too slow near the basket; speed up a lot there").
     """
+    return SPEED_FACTORS["faster" if faster else "slower"][amount_size(_speed_clause(words))]
+
+
+def stated_factor(words: str, faster: bool) -> float | None:
+    """The one factor the speed clause of ``words`` states in the asked direction, or None.
+
+    "slower by half" states 0.5, "twice as fast" 2, "20% slower" 0.8 (a percentage only with its
+    sign); a clause with no such number, or with two, states none.
+
+    >>> stated_factor("walk away from the lamp and go slower by half", faster=False)
+    0.5
+    """
+    clause = _speed_clause(words)
+    numbers = [n for n in _factor_numbers(clause) if n > 0]
+    candidates = {n for n in numbers} | {1 / n for n in numbers}
+    if PERCENT.search(clause):
+        percent = [float(n) for n in PERCENT.findall(clause)]
+        candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}
+    asked = {round(c, 6) for c in candidates if (c > 1 if faster else 0 < c < 1)}
+    return asked.pop() if len(asked) == 1 else None
+
+
+def _factor_numbers(clause: str) -> list[float]:
+    """The numbers a clause gives as factors: "half", "twice", "3 times", "a factor of 2" (no distance)."""
+    words = [FACTOR_WORDS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in FACTOR_WORDS]
+    times = [found.group(1) or found.group(2) for found in TIMES.finditer(clause)]
+    return words + [float(NUMBER_WORDS.get(n.lower(), 0) or n) for n in times]
+
+
+FACTOR_WORDS = {
+    "half": 0.5, "halve": 0.5, "halved": 0.5, "halving": 0.5, "twice": 2.0, "double": 2.0,
+    "doubled": 2.0, "doubling": 2.0, "thrice": 3.0, "triple": 3.0, "tripled": 3.0,
+}  # fmt: skip
+TIMES = re.compile(
+    rf"\b({NUMBER_TEXT}|two|three|four|five)\s*(?:times\b|x\b)|factor\s+of\s+({NUMBER_TEXT}|two|three)\b",
+    re.I,
+)
+PERCENT = re.compile(rf"({NUMBER_TEXT})\s*(?:%|per\s*cent\b)", re.I)
+
+
+def _speed_clause(words: str) -> str:
+    """The first clause with a speed word that is no statement (or the first with one)."""
     paced = [c for c in split_clauses(words) if SPEED_WORDS.search(c)]
-    clause = next((c for c in paced if not is_statement(c)), paced[0] if paced else "")
-    return SPEED_FACTORS["faster" if faster else "slower"][amount_size(clause)]
+    return next((c for c in paced if not is_statement(c)), paced[0] if paced else "")

@@ -14,7 +14,8 @@ the words:
   distance from the barn", "don't rush near the box", "don't go as slow in the middle", "don't keep
   going") is said as what to do ("walk further from the lamp", "keep less distance from the barn",
   "slow down near the box", "go faster in the middle", "stop"). A negation of a plain pace ("don't
-  slow down") or of a limit ("don't go faster than 2") is left as said: it asks no change.
+  slow down") or of a limit ("don't go faster than 2") is left as said: it asks no change. "Not
+  anywhere near as fast" (or "nearly", "anything like", "remotely") is "a lot slower".
 
 Where none of these forms occurs the words are returned exactly as said.
 """
@@ -80,6 +81,8 @@ NEGATED_ASK = re.compile(
 )
 """A negation, at most four words that ask nothing of pace or distance, then what is negated: each
 kind in ``_ASKS`` with what the negation asks instead ("don't walk so close to" -> "walk further from")."""
+FAR_FROM_IT = re.compile(r"\b(?:nearly|anywhere\s+near|anything\s+like|remotely)\s", re.I)
+"""A degree that makes the negation strong: "not anywhere near as fast" is "a lot slower"."""
 LIMIT = re.compile(r"^\s*than\b", re.I)
 
 
@@ -157,7 +160,8 @@ def _negations_as_asks(words: str, keep: Callable[[str], bool]) -> str:
         if LIMIT.match(words[found.end() :]) or keep(_sentence_at(words, found.start())):
             return found.group(0)
         kind = next(key for key in _ASKS if found.group(key))
-        asked = (found.group(1) or "") + _ASKS[kind][1].format(gap=found.group("gap") or "")
+        much = "a lot " if FAR_FROM_IT.search(found.group(kind)) else ""
+        asked = (found.group(1) or "") + much + _ASKS[kind][1].format(gap=found.group("gap") or "")
         return asked[:1].upper() + asked[1:] if found.group(0)[:1].isupper() else asked
 
     return NEGATED_ASK.sub(said, words)

@@ -11,8 +11,9 @@ change (``set_speed(t, 5, near=box, radius=1.0)`` on a 100-unit map reached no w
 factor the user never gave (``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated
 factor of the prompt's phrase table for the words of the speed's own clause ('a bit', none, 'a
 lot'), in the direction the words ask when they ask only one ("pick up the pace" with a factor
-below 1), else in the one the model chose; "by 20%", "twice", "half as fast" are stated factors. A
-review note says so.
+below 1), else in the one the model chose; "by 20%", "twice", "half as fast" are stated factors, and
+a factor the model made up where the speed clause states one ("go slower by half" answered with
+0.45) becomes the stated one. A review note says so.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
-from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.paces import speed_factor, stated_factor
 from trajadapt.readers.words import FASTER, SLOWER, intensity_word, is_stated, stated_numbers
 from trajadapt.skills import SKILLS
 
@@ -46,15 +47,23 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if _made_up_height(line, numbers):
             notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
             continue
-        changed = _replace_in_line(line, numbers, word) or _calibrate_factor(line, numbers, words)
+        changed = _replace_in_line(line, numbers, word)
+        used = repr(word) if word else "the default amount"
+        if changed is None:
+            changed = _calibrate_factor(line, numbers, words)
+            used = "the factor the words state" if changed and _states_factor(words) else used
         if changed is not None and changed != line.strip():
             notes.append(
-                f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so "
-                f"{repr(word) if word else 'the default amount'} is used"
+                f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so {used} is used"
             )
             line = in_place_of(line, changed)
         lines.append(line)
     return "\n".join(lines), notes
+
+
+def _states_factor(words: str) -> bool:
+    """Whether the speed clause of ``words`` states a factor either way."""
+    return stated_factor(words, faster=True) is not None or stated_factor(words, faster=False) is not None
 
 
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
@@ -125,7 +134,8 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> str | None
         if is_stated_factor(float(value), numbers):
             continue
         faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
-        argument.value = speed_factor(words, faster=faster if faster != slower else value > 1)
+        asked = faster if faster != slower else value > 1
+        argument.value = stated_factor(words, asked) or speed_factor(words, asked)
         return ast.unparse(tree)
     return None
 

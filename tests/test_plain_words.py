@@ -126,3 +126,20 @@ def test_the_readers_read_the_plain_words():
     read, notes = read_against_words(code, ["don't drive quite so fast near the mug"], NAMES)
     assert "scale_speed(t, 0.7" in read or "scale_speed(t, 0.6" in read, read
     assert notes[0].reader == "request-words"
+
+
+@pytest.mark.parametrize(
+    ("words", "plain"),
+    [
+        ("Stop dawdling around the red mug.", "Speed up around the red mug."),
+        ("quit zooming past the table lamp", "slow down past the table lamp"),
+        ("stop hovering so close to the red mug", "hovering further from the red mug"),
+    ],
+)
+def test_what_to_stop_doing_is_said_as_what_to_do(words, plain):
+    assert _plain(words) == plain
+
+
+@pytest.mark.parametrize("words", ["stop near the red mug", "stop moving near the red mug", "stop at the goal"])
+def test_stopping_somewhere_is_no_negation(words):
+    assert _plain(words) == words

@@ -154,3 +154,9 @@ def test_a_made_up_factor_becomes_the_one_the_words_state(words, made_up, stated
     read, notes = replace_unstated_amounts(code, [words])
     assert f"scale_speed(t, {stated})" in read
     assert "the factor the words state" in notes[0]
+
+
+def test_the_amount_is_the_one_a_clause_of_that_pace_says():
+    code = "t = get_trajectory()\nt = scale_speed(t, 1.3)\nmodified_trajectory = t"
+    read, _ = replace_unstated_amounts(code, ["Drive faster by the lamp; it must be much faster there."])
+    assert "scale_speed(t, 1.6)" in read

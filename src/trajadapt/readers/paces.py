@@ -6,18 +6,21 @@ import re
 
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.request_words import is_statement
-from trajadapt.readers.words import NUMBER_TEXT, NUMBER_WORDS, SPEED_WORDS, amount_size
+from trajadapt.readers.words import FASTER, NUMBER_TEXT, NUMBER_WORDS, SLOWER, SPEED_WORDS, amount_size
 from trajadapt.skills.speed import SPEED_FACTORS
 
 
 def speed_factor(words: str, faster: bool) -> float:
     """The calibrated factor for the speed clause of ``words``: 'a bit', plain or 'a lot' faster/slower.
 
-    The clause is the first of ``split_clauses`` with a speed word, so an amount word of another
-    clause ("go left a lot and walk faster") does not count, and not one that only says how the
-    path is now ("it's way too slow near the basket; speed up a lot there").
+    The amount is the first said by a clause that asks that pace ("walk faster around the dog; it
+    should be a lot faster there" is 'a lot'), else by the first clause with a speed word, so an
+    amount word of another clause ("go left a lot and walk faster") does not count, and not one
+    that only says how the path is now ("it's way too slow near the basket; speed up a lot there").
     """
-    return SPEED_FACTORS["faster" if faster else "slower"][amount_size(_speed_clause(words))]
+    said = [amount_size(clause) for clause in _speed_clauses(words, faster)]
+    size = next((size for size in said if size), said[0] if said else "")
+    return SPEED_FACTORS["faster" if faster else "slower"][size]
 
 
 def stated_factor(words: str, faster: bool) -> float | None:
@@ -61,3 +64,10 @@ def _speed_clause(words: str) -> str:
     """The first clause with a speed word that is no statement (or the first with one)."""
     paced = [c for c in split_clauses(words) if SPEED_WORDS.search(c)]
     return next((c for c in paced if not is_statement(c)), paced[0] if paced else "")
+
+
+def _speed_clauses(words: str, faster: bool) -> list[str]:
+    """The clauses that ask the pace in the ``faster`` direction, else the first speed clause."""
+    asked = FASTER if faster else SLOWER
+    said = [c for c in split_clauses(words) if asked.search(c) and not is_statement(c)]
+    return said or [_speed_clause(words)]

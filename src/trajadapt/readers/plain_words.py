@@ -62,25 +62,34 @@ _RELATION_WORDS = (
     r"|left|right|up|down|forwards?|back\w*|higher|lower|above|below|over|under)"
 )
 _VERB_WORDS = rf"((?:(?!{_RELATION_WORDS}\b)[a-z']+\s+){{0,4}}?)"
+_STOPPING = r"\b(?:stop|quit)\s+(?=[a-z]+ing\b)"
+"""A negation by stopping: "stop walking so slowly", "stop dawdling" (never "stop near the lamp")."""
+_NO_DEGREE_AFTER = r"(?![^,.;]*?\b(?:so|as|too|that)\s+(?:slow|fast|quick|rapid))"
+"""A verb that is itself too fast or too slow ("rush", "dawdle") asks the opposite, but where the
+clause says how much later ("don't crawl along nearly as slowly"): that degree is what is negated."""
 _ASKS = {
-    "further": (rf"(?:{_DEGREE})?(?:close(?:ly)?|near)(?:\s+(?:to|by))?\b", "further from"),
+    "further": (r"{degree}(?:close(?:ly)?|near)(?:\s+(?:to|by))?\b", "further from"),
     "less": (rf"{_DEGREE}much\s+(?P<gap>distance|space|room|clearance|gap|margin)\b", "less {gap}"),
-    "closer": (rf"(?:{_DEGREE})?far(?:\s+away)?\s+from\b", "closer to"),
+    "closer": (r"{degree}far(?:\s+away)?\s+from\b", "closer to"),
     "slower": (rf"{_DEGREE}(?:fast|quick(?:ly)?|rapid(?:ly)?|speedily|hastily)\b", "slower"),
-    "slow_down": (r"(?:rush|hurry|race|zoom)\w*\b", "slow down"),
+    "slow_down": (r"(?:rush|hurry|race|zoom)\w*\b" + _NO_DEGREE_AFTER, "slow down"),
     "faster": (rf"{_DEGREE}slow(?:ly)?\b", "faster"),
+    "speed_up": (r"(?:dawdl|crawl|loiter|plod|amble|drag)\w*\b" + _NO_DEGREE_AFTER, "speed up"),
     "stop": (r"(?:keep\s+(?:going|moving)|carry\s+on)\b", "stop"),
 }
-NEGATED_ASK = re.compile(
-    _NEGATION
-    + _VERB_WORDS
-    + "(?:"
-    + "|".join(f"(?P<{key}>{pattern})" for key, (pattern, _) in _ASKS.items())
-    + ")",
-    re.I,
-)
-"""A negation, at most four words that ask nothing of pace or distance, then what is negated: each
-kind in ``_ASKS`` with what the negation asks instead ("don't walk so close to" -> "walk further from")."""
+"""What a negation may negate, by kind, and what it then asks; ``{degree}`` is "so", "as", "too"
+before the word, which a negation by stopping needs and "don't" does not ("don't go near")."""
+
+
+def _negated(negation: str, degree: str) -> re.Pattern[str]:
+    """A negation, at most four words that ask nothing of pace or distance, then a kind of ``_ASKS``."""
+    kinds = "|".join(f"(?P<{key}>{pattern.format(degree=degree)})" for key, (pattern, _) in _ASKS.items())
+    return re.compile(f"{negation}{_VERB_WORDS}(?:{kinds})", re.I)
+
+
+NEGATED_ASKS = (_negated(_NEGATION, f"(?:{_DEGREE})?"), _negated(_STOPPING, _DEGREE))
+"""Each negated comparison, said with "don't" (and the like) or by stopping, and what it asks
+instead ("don't walk so close to" -> "walk further from", "stop dawdling" -> "speed up")."""
 FAR_FROM_IT = re.compile(r"\b(?:nearly|anywhere\s+near|anything\s+like|remotely)\s", re.I)
 """A degree that makes the negation strong: "not anywhere near as fast" is "a lot slower"."""
 LIMIT = re.compile(r"^\s*than\b", re.I)
@@ -164,7 +173,9 @@ def _negations_as_asks(words: str, keep: Callable[[str], bool]) -> str:
         asked = (found.group(1) or "") + much + _ASKS[kind][1].format(gap=found.group("gap") or "")
         return asked[:1].upper() + asked[1:] if found.group(0)[:1].isupper() else asked
 
-    return NEGATED_ASK.sub(said, words)
+    for negated in NEGATED_ASKS:
+        words = negated.sub(said, words)
+    return words
 
 
 def _sentence_at(words: str, index: int) -> str:

@@ -46,3 +46,11 @@ def test_a_side_said_as_what_not_to_do_is_the_other_side():
     asks = object_asks("make sure it doesn't pass to the left of the drum", NAMES)
     assert asks["drum"].relation == "side"
     assert asks["drum"].side == "right"
+
+
+def test_never_closer_than_is_a_least_distance():
+    for words in (
+        "make sure you're never closer than 0.3 to the drum",
+        "don't get any nearer than 0.3 to the drum",
+    ):
+        assert object_asks(words, NAMES)["drum"].relation == "away", words

@@ -89,6 +89,7 @@ def test_a_word_two_objects_share_or_no_object_is_called_is_kept(words):
         ("Please don't fly so near the red mug", "Please fly further from the red mug"),
         ("never brush that close by the table lamp", "brush further from the table lamp"),
         ("do not leave as much room around the red mug", "leave less room around the red mug"),
+        ("don't give the red mug so wide a berth", "give the red mug less berth"),
         ("don't hover quite so far from the table lamp", "hover closer to the table lamp"),
         ("never go that fast around the red mug", "go slower around the red mug"),
         ("Don't hurry through the last stretch", "Slow down through the last stretch"),
@@ -140,6 +141,8 @@ def test_what_to_stop_doing_is_said_as_what_to_do(words, plain):
     assert _plain(words) == plain
 
 
-@pytest.mark.parametrize("words", ["stop near the red mug", "stop moving near the red mug", "stop at the goal"])
+@pytest.mark.parametrize(
+    "words", ["stop near the red mug", "stop moving near the red mug", "stop at the goal"]
+)
 def test_stopping_somewhere_is_no_negation(words):
     assert _plain(words) == words

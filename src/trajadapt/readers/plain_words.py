@@ -6,16 +6,19 @@ the words:
 
 - steps given as a list ("1) go up 2) slow down", "- go up" on its own line) become sentences, so
   that a list number is never read as an amount;
-- a number said in words with a decimal point ("zero point three", "point two") becomes digits;
+- a number said in words with a decimal point ("zero point three", "point two"), or a distance
+  said in words ("by three", "within two of"), becomes digits;
 - an object called by one word of its scene name ("the husky" for "Siberian husky", "the remote"
   for "remote_controller") is called by its full name, where no other object of the scene has that
   word;
 - a comparison said as what not to do ("don't walk so close to the lamp", "don't keep as much
   distance from the barn", "don't rush near the box", "don't go as slow in the middle", "don't keep
   going") is said as what to do ("walk further from the lamp", "keep less distance from the barn",
-  "slow down near the box", "go faster in the middle", "stop"). A negation of a plain pace ("don't
-  slow down") or of a limit ("don't go faster than 2") is left as said: it asks no change. "Not
-  anywhere near as fast" (or "nearly", "anything like", "remotely") is "a lot slower".
+  "slow down near the box", "go faster in the middle", "stop"), and so is one said as what to stop
+  doing ("stop walking so slowly" -> "walking faster", "stop dawdling" -> "speed up"). A negation of
+  a plain pace ("don't slow down") or of a limit ("don't go faster than 2") is left as said: it asks
+  no change. "Not anywhere near as fast" (or "nearly", "anything like", "remotely") is "a lot
+  slower".
 
 Where none of these forms occurs the words are returned exactly as said.
 """
@@ -69,7 +72,10 @@ _NO_DEGREE_AFTER = r"(?![^,.;]*?\b(?:so|as|too|that)\s+(?:slow|fast|quick|rapid)
 clause says how much later ("don't crawl along nearly as slowly"): that degree is what is negated."""
 _ASKS = {
     "further": (r"{degree}(?:close(?:ly)?|near)(?:\s+(?:to|by))?\b", "further from"),
-    "less": (rf"{_DEGREE}much\s+(?P<gap>distance|space|room|clearance|gap|margin)\b", "less {gap}"),
+    "less": (
+        rf"{_DEGREE}(?:much|big|large|wide|great)\s+(?:an?\s+)?(?P<gap>distance|space|room|clearance|gap|margin|berth)\b",
+        "less {gap}",
+    ),
     "closer": (r"{degree}far(?:\s+away)?\s+from\b", "closer to"),
     "slower": (rf"{_DEGREE}(?:fast|quick(?:ly)?|rapid(?:ly)?|speedily|hastily)\b", "slower"),
     "slow_down": (r"(?:rush|hurry|race|zoom)\w*\b" + _NO_DEGREE_AFTER, "slow down"),

@@ -31,6 +31,11 @@ def test_a_list_becomes_sentences_and_its_numbers_no_amounts(words, plain):
     assert _plain(words) == plain
 
 
+@pytest.mark.parametrize("words", ["- ", "\n- \n", "1)"])
+def test_marks_with_no_item_are_kept_as_said(words):
+    assert _plain(words) == words
+
+
 @pytest.mark.parametrize(
     ("words", "plain"),
     [

@@ -121,6 +121,8 @@ def _list_as_sentences(words: str) -> str:
         return words
     items = [item.strip(" \t\n,;") for item in LIST_MARK.split(words)]
     items = [item for item in items if item]
+    if not items:  # marks and nothing else: no list to read
+        return words
     return " ".join(item if item[-1] in ".!?:" else f"{item}." for item in items)
 
 

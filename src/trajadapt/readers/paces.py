@@ -34,7 +34,7 @@ def stated_factor(words: str, faster: bool) -> float | None:
     """
     clause = _speed_clause(words)
     numbers = [n for n in _factor_numbers(clause) if n > 0]
-    candidates = {n for n in numbers} | {1 / n for n in numbers}
+    candidates = set(numbers) | {1 / n for n in numbers}
     if PERCENT.search(clause):
         percent = [float(n) for n in PERCENT.findall(clause)]
         candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}

@@ -41,9 +41,10 @@ _DIGIT = "|".join(_DIGITS)
 DECIMAL_IN_WORDS = re.compile(rf"\b(?:({_DIGIT})\s+)?point((?:\s+(?:{_DIGIT}))+)\b", re.I)
 """A decimal said in words: "zero point three", "point two five", "one point five"."""
 _CARDINALS = {**_DIGITS, "ten": "10", "twenty": "20"}
+_CARDINAL = "|".join(_CARDINALS)
 AMOUNT_IN_WORDS = re.compile(
-    rf"\b(?:by\s+(?=(?:{'|'.join(_CARDINALS)})\b(?!\s+(?:times|of)\b))|within\s+)({'|'.join(_CARDINALS)})\b"
-    rf"|\b({'|'.join(_CARDINALS)})(?=\s+(?:units?|metres?|meters?)\b)",
+    rf"\b(?:by\s+(?=(?:{_CARDINAL})\b(?!\s+(?:times|of)\b))|within\s+)({_CARDINAL})\b"
+    rf"|\b({_CARDINAL})(?=\s+(?:units?|metres?|meters?)\b)",
     re.I,
 )
 """A whole amount said in words where it is a distance: "by three", "within two of", "two units"."""
@@ -107,8 +108,9 @@ def plain_words(words: str, names: Sequence[str], keep: Callable[[str], bool]) -
     ``keep`` says which sentences to leave as said (those that only state how the path is now, where
     a negation is no request: "it doesn't slow down near the lamp").
 
-    >>> plain_words("1) go up by point two 2) don't walk so close to the husky", ["Siberian husky"], bool)
-    "go up by 0.2. walk further from the Siberian husky."
+    >>> words = "1) go up by point two 2) don't walk so close to the husky"
+    >>> plain_words(words, ["Siberian husky"], keep=lambda sentence: False)
+    'go up by 0.2. walk further from the Siberian husky.'
     """
     plain = _decimals_in_digits(_list_as_sentences(words))
     plain = _full_names(plain, names)

@@ -49,9 +49,9 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
             continue
         changed = _replace_in_line(line, numbers, word)
         used = repr(word) if word else "the default amount"
-        if changed is None:
-            changed = _calibrate_factor(line, numbers, words)
-            used = "the factor the words state" if changed and _states_factor(words) else used
+        if changed is None and (calibrated := _calibrate_factor(line, numbers, words)):
+            changed, stated = calibrated
+            used = "the factor the words state" if stated else used
         if changed is not None and changed != line.strip():
             notes.append(
                 f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so {used} is used"
@@ -59,11 +59,6 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
             line = in_place_of(line, changed)
         lines.append(line)
     return "\n".join(lines), notes
-
-
-def _states_factor(words: str) -> bool:
-    """Whether the speed clause of ``words`` states a factor either way."""
-    return stated_factor(words, faster=True) is not None or stated_factor(words, faster=False) is not None
 
 
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
@@ -117,8 +112,12 @@ def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str |
     return ast.unparse(tree)
 
 
-def _calibrate_factor(line: str, numbers: list[float], words: str) -> str | None:
-    """The line with a made-up speed factor set to the calibrated one for the user's words."""
+def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str, bool] | None:
+    """The line with a made-up speed factor replaced, and whether the words stated the new one.
+
+    The new factor is the one the speed clause states ("slower by half"), else the calibrated one for
+    its amount word.
+    """
     found = _skill_call(line)
     if found is None:
         return None
@@ -135,8 +134,9 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> str | None
             continue
         faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
         asked = faster if faster != slower else value > 1
-        argument.value = stated_factor(words, asked) or speed_factor(words, asked)
-        return ast.unparse(tree)
+        stated = stated_factor(words, asked)
+        argument.value = stated or speed_factor(words, asked)
+        return ast.unparse(tree), stated is not None
     return None
 
 

@@ -99,11 +99,6 @@ def test_unclear_asks_are_left_out(words: str) -> None:
             ["t = pass_through(t, detect_objects('sofa'))"],
         ),
         (
-            "t = keep_side(t, 'front', detect_objects('sofa'))",
-            "stay on the front part a bit",
-            ["t = shift(t, 'front', 'a bit')"],
-        ),
-        (
             "t = avoid(t, detect_objects('sofa'), 0.5)",
             "walk a lot further from the sofa",
             ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
@@ -118,6 +113,21 @@ def test_unclear_asks_are_left_out(words: str) -> None:
             "ease off all around the sofa",
             ["t = scale_speed(t, 0.65, near=detect_objects('sofa'))"],
         ),  # "around" placed a pace; no word asks to go round
+        (
+            "t = keep_side(t, 'back', detect_objects('sofa'))",
+            "the path ought to come a bit nearer the sofa than today",
+            ["t = move_closer(t, detect_objects('sofa'), 'a bit')"],
+        ),  # a side nobody asked, for a distance
+        (
+            "t = keep_side(t, 'left', detect_objects('sofa'))",
+            "steer well clear of the sofa",
+            ["t = move_away(t, detect_objects('sofa'))"],
+        ),
+        (
+            "t = keep_side(t, 'front', detect_objects('lamp'))",
+            "crawl by the lamp",
+            ["t = scale_speed(t, 0.65, near=detect_objects('Lamp'))"],
+        ),
     ],
 )
 def test_a_step_that_does_something_else_is_replaced_with_a_note(

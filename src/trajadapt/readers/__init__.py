@@ -30,6 +30,7 @@ from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
 from trajadapt.readers.request_words import request_words
 from trajadapt.readers.scaled_distances import scale_distances
+from trajadapt.readers.scene_sides import sides_of_the_scene
 from trajadapt.readers.speed_profiles import profile_paces
 from trajadapt.readers.speed_scope import localize_speed
 from trajadapt.readers.stated_amounts import use_stated_amounts
@@ -73,6 +74,7 @@ READERS: tuple[Reader, ...] = (
     Reader("height-asks", "heights said as a limit or a level",
            lambda code, asked, _: relate_heights(code, asked)),
     Reader("object-asks", "what each clause asks of the object it names", replace_object_steps),
+    Reader("scene-sides", "a side of an object nobody named, where the words name none", sides_of_the_scene),
     Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
            add_asked_relations),
     Reader("past-the-goal", "a place the words ask to go to once the goal is reached",

@@ -19,12 +19,12 @@ the scene's objects asks one thing of it:
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
   ``move_closer`` / ``move_away`` with the clause's vague word.
 
+A ``keep_side`` of an object whose clause asks no side but a distance or a pace ("it should stay
+nearer to the chair than it does now" answered with ``keep_side(t, 'front', chair)``) does another
+job: it is replaced like a distance step.
+
 A ``midpoint`` of an object the words name and one they do not (with no "middle" or "between" in
 them) is the named object itself.
-
-When the words name no object at all, a side is a side of the scene ("stay on the left", "stay on
-the front part"): a ``keep_side`` about an object the user never named becomes a ``shift`` to that
-side with the clause's vague word.
 
 Crossed objects: when one clause asks a pace near one object and another asks a distance to a
 second, and the code places its one speed step near the second object and none near the first
@@ -54,7 +54,6 @@ from trajadapt.code_parse import (
     call_of,
     called_name,
     detected_name,
-    direction_argument,
     in_place_of,
     objects_of,
     on_object,
@@ -105,7 +104,11 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         if ask.relation in ("faster", "slower") and changes_speed:
             continue
         written = _steps_for_place(ask, words)
-        steps = [i for i, line in enumerate(lines) if on_object(call_of(line, written), ask.name)]
+        steps = [
+            i
+            for i, line in enumerate(lines)
+            if on_object(call_of(line, written), ask.name) or _side_of_unsided(line, ask)
+        ]
         if len(steps) != 1 or (ask.relation == "side" and any(call_of(x, ("keep_side",)) for x in lines)):
             continue
         replaced = _replacement(lines[steps[0]], ask)
@@ -116,7 +119,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         lines[steps[0] : steps[0] + 1] = [in_place_of(lines[steps[0]], line) for line in replaced]
     _unnamed_midpoints(lines, notes, words, names)
     _stated_clearances(lines, notes, words, names)
-    return _sides_of_the_scene(lines, notes, words, names)
+    return "\n".join(lines), notes
 
 
 def _crossed_objects(lines: list[str], notes: list[str], asks: dict[str, ObjectAsk]) -> None:
@@ -336,23 +339,12 @@ def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: li
             lines[index] = in_place_of(line, changed)
 
 
-def _sides_of_the_scene(
-    lines: list[str], notes: list[str], words: str, names: list[str]
-) -> tuple[str, list[str]]:
-    """``keep_side`` about an object the words do not name, when they name none, as a shift to that side."""
-    if names_in(words, names):
-        return "\n".join(lines), notes
-    for index, line in enumerate(lines):
-        call = call_of(line, ("keep_side",))
-        side = direction_argument(call)
-        if side is None:
-            continue
-        word = intensity_word(words)
-        shifted = f"t = shift(t, {side!r}{f', {word!r}' if word else ''})"
-        notes.append(f"`{line.strip()}` -> `{shifted}`: the instruction names no object, so {side} is a "
-                     f"side of the scene")  # fmt: skip
-        lines[index] = in_place_of(line, shifted)
-    return "\n".join(lines), notes
+def _side_of_unsided(line: str, ask: ObjectAsk) -> bool:
+    """Whether ``line`` keeps to a side of the object whose clause asks a distance or a pace, no side."""
+    call = call_of(line, ("keep_side",))
+    if call is None or ask.relation == "side" or len(call.args) < 3:
+        return False
+    return (detected_name(call.args[2]) or "").casefold() == ask.name.casefold()
 
 
 def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
+from trajadapt.readers.asked_paces import add_asked_paces
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.curve_asks import bend_as_asked
@@ -88,6 +89,8 @@ READERS: tuple[Reader, ...] = (
            lambda code, asked, _: alternate_shifts(code, asked)),
     Reader("curve-asks", "a step that bends the path the other way from the words",
            lambda code, asked, _: bend_as_asked(code, asked)),
+    Reader("asked-paces", "a pace a clause asks (slower, faster, a stated speed) and no step makes",
+           add_asked_paces),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
            profile_paces),

@@ -1,0 +1,198 @@
+"""A pace a clause asks and no step makes: the step added.
+
+A small model drops the speed clause of a compound instruction: "move up a little, keeping the
+speed constant at 0.1" came back as the shift alone, "as the goal position is reached, reduce the
+speed uniformly" as ``stop_at`` of the goal (which the unnamed-objects reader leaves out). Each
+clause of the request that is no statement and no negation asks a pace (a pace word of a request
+itself, "quick one: go left", asks none) when it
+
+- states a speed ("at a constant speed of 0.2", "the speed constant at 0.1", "set the velocity to
+  0.3"; not a limit: "no faster than 2", "cap the speed at 2", "by 0.2") -> ``set_speed(t, 0.1)``;
+- asks slower at the goal or the end ("as the goal is reached", "towards the end"), or to
+  decelerate -> ``speed_profile(t, 'decelerate', start=0.7)`` (the prompt's own example); to
+  accelerate -> ``speed_profile(t, 'accelerate')``;
+- asks faster or slower -> ``scale_speed(t, <factor>)``: the factor the clause states ("by half")
+  or the phrase table's for its amount word ("a lot slower": 0.45); a number that is no factor
+  ("raise the speed by 0.2") asks an amount no factor makes, and nothing is added.
+
+A clause that names one scene object with a word of place ("near the lamp", "while passing the
+box") places the step there (``near=``); one that names a part ("the first half", "the middle")
+gives ``part=``. The clause is served when a speed step already makes it: any speed step for a
+clause with no object; for a clause with an object, a step placed at that object or one placed
+nowhere or at a part of the path (the speed-scope reader places one placed nowhere); a step
+placed at another object serves it not. Otherwise the step is added after the last step, and a
+review note says which words asked it. Code that is not made of skill calls alone is left alone.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.code_parse import after_last_step, call_of, placed_near, skill_program
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.paces import speed_factor, stated_factor
+from trajadapt.readers.request_words import is_statement
+from trajadapt.readers.words import (
+    FASTER,
+    GOAL,
+    NUMBER_TEXT,
+    PLACE_WORDS,
+    SLOWER,
+    longest_names,
+    names_in,
+)
+from trajadapt.skills import SKILL_NAMES
+from trajadapt.skills.core import NUMBER
+
+SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
+STOP_RAMP_START = 0.7  # a slowing towards the goal runs over the last 30% of the path
+
+_CONNECTIVES = (
+    r"(?:constant|steady|uniform|fixed|kept|held|set|exactly|about|around|roughly|approximately|equal"
+    r"|always|stays?|remains?|is|be|should|of|at|to|=|:)"
+)
+STATED_SPEED = re.compile(
+    rf"\b(?:speed|velocity|pace)\s+(?:{_CONNECTIVES}\s*){{0,4}}({NUMBER_TEXT})(?!\s*(?:%|times\b|x\b|per\s*cent))"
+    rf"|\bat\s+({NUMBER_TEXT})\s+(?:units?\s+)?(?:speed|velocity|pace)\b",
+    re.I,
+)
+"""A speed said as a value: "at a speed of 0.1", "speed constant at 0.1", "at 0.3 speed"."""
+LIMIT = re.compile(
+    r"\b(?:than|at\s+most|at\s+least|max\w*|min\w*|cap\w*|limit\w*|exceed\w*|under|below|beyond"
+    r"|up\s+to|no\s+more|by|factor)\b",
+    re.I,
+)
+"""Words that make a stated speed a limit or a change by an amount, not the speed to keep."""
+PAST = re.compile(r"\bpast\b", re.I)  # "crawl past the lamp" places a pace, as "while passing" does
+NOT_A_PACE = re.compile(
+    r"\bquick\s+(?:one|question|thing|request|favou?r|note|tweak|change|fix|ask|edit|update|word)\b", re.I
+)
+"""A pace word that asks nothing of the path: "quick one: go to the left", "a quick tweak"."""
+NEGATED = re.compile(r"\b(?:not|never|no|don't|doesn't|without)\b|n't\b", re.I)
+TOWARDS_THE_END = re.compile(
+    r"\b(?:towards?|near(?:ing)?|approach\w*|reach\w*|at|by)\s+(?:the\s+)?(?:end|finish)\b"
+    r"|\b(?:end|last\s+(?:part|stretch|bit|section))\s+of\s+the\s+(?:path|route|trajectory)\b",
+    re.I,
+)
+DECELERATE = re.compile(r"\bdecelerat\w*", re.I)
+ACCELERATE = re.compile(r"\baccelerat\w*", re.I)
+PARTS = (
+    (re.compile(r"\bfirst\s+half\b", re.I), "first half"),
+    (re.compile(r"\b(?:second|last|latter)\s+half\b", re.I), "second half"),
+    (re.compile(r"\b(?:the\s+)?(?:middle|halfway|midway)\b", re.I), "middle"),
+    (re.compile(r"\b(?:the\s+)?(?:start|beginning)\b(?!\s+(?:position|point))", re.I), "start"),
+)
+"""Parts of the path a clause names, and the ``part=`` word of the speed skills."""
+
+
+@dataclass(frozen=True)
+class AskedPace:
+    """What one clause asks of the speed: the step that makes it, and the object it is placed at."""
+
+    clause: str
+    step: str
+    near: str | None
+
+
+def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with a speed step for each pace a clause asks and no step makes (see the module)."""
+    names = list(names)
+    lines = code.splitlines()
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if program is None:
+        return code, []
+    variable = program[1]
+    places = [_place(line) for line in lines if call_of(line, SPEED_STEPS) is not None]
+    added: list[str] = []
+    notes: list[str] = []
+    for words in asked:
+        for clause in split_clauses(words, names):
+            pace = asked_pace(clause, names, variable)
+            if pace is None or _served(pace, places):
+                continue
+            added.append(pace.step)
+            places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
+            notes.append(f"added `{pace.step}`: the words ask it ({clause.strip()!r}) and no step makes it")
+    if not added:
+        return code, []
+    end = after_last_step(lines, SKILL_NAMES)
+    return "\n".join([*lines[:end], *added, *lines[end:]]), notes
+
+
+def asked_pace(clause: str, names: list[str], variable: str = "t") -> AskedPace | None:
+    """The speed step ``clause`` asks, if it asks one (see the module).
+
+    >>> asked_pace("keeping the speed constant at 0.1", []).step
+    't = set_speed(t, 0.1)'
+    >>> asked_pace("go a lot slower near the lamp", ["lamp"]).step
+    "t = scale_speed(t, 0.45, near=detect_objects('lamp'))"
+    """
+    clause = NOT_A_PACE.sub(" ", clause)
+    if is_statement(clause) or NEGATED.search(clause):
+        return None
+    near = _placed_object(clause, names)
+    where = f", near=detect_objects({near!r})" if near else _part_argument(clause)
+    call = _stated_speed(clause, where) or _changed_pace(clause, where)
+    return None if call is None else AskedPace(clause, f"{variable} = {call.format(t=variable)}", near)
+
+
+def _stated_speed(clause: str, where: str) -> str | None:
+    """``set_speed`` of the speed the clause states as the one to keep (not a limit), if it states one."""
+    stated = STATED_SPEED.search(clause)
+    if stated is None or LIMIT.search(clause):
+        return None
+    return f"set_speed({{t}}, {float(stated.group(1) or stated.group(2)):g}{where})"
+
+
+def _changed_pace(clause: str, where: str) -> str | None:
+    """The profile or scale for a clause that asks only faster or only slower, else None."""
+    slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
+    if slower == faster:
+        return None
+    towards_the_end = GOAL.search(clause) or TOWARDS_THE_END.search(clause) or DECELERATE.search(clause)
+    if slower and towards_the_end and "near=" not in where:
+        return f"speed_profile({{t}}, 'decelerate', start={STOP_RAMP_START})"
+    if faster and ACCELERATE.search(clause) and not where:
+        return "speed_profile({t}, 'accelerate')"
+    unplaced = _without_parts(clause)  # "speed up in the first half": no factor of a half
+    stated = stated_factor(unplaced, faster)
+    if stated is None and NUMBER.search(unplaced):
+        return None  # "raise the speed by 0.2": an amount no factor makes
+    factor = stated or speed_factor(unplaced, faster)
+    return f"scale_speed({{t}}, {factor:g}{where})"
+
+
+def _served(pace: AskedPace, places: list[str | None]) -> bool:
+    """Whether a speed step makes ``pace`` already: any for no object, else one not placed at another."""
+    if pace.near is None:
+        return bool(places)
+    return any(place in (None, pace.near.casefold()) for place in places)
+
+
+def _place(line: str) -> str | None:
+    """The object a speed step is placed at (casefolded), None for none (the whole path or a part)."""
+    near = placed_near(call_of(line, SPEED_STEPS))
+    return None if near is None else near.casefold()
+
+
+def _placed_object(clause: str, names: list[str]) -> str | None:
+    """The one scene object the clause places its pace at ("near the lamp"), if it names one."""
+    if not (PLACE_WORDS.search(clause) or PAST.search(clause)):
+        return None
+    named = longest_names(names_in(clause, names))
+    return named[0] if len(named) == 1 else None
+
+
+def _without_parts(clause: str) -> str:
+    """``clause`` less the parts of the path it names."""
+    for pattern, _ in PARTS:
+        clause = pattern.sub(" ", clause)
+    return clause
+
+
+def _part_argument(clause: str) -> str:
+    """``, part='<part>'`` for the one part of the path the clause names, else nothing."""
+    found = [part for pattern, part in PARTS if pattern.search(clause)]
+    return f", part={found[0]!r}" if len(found) == 1 else ""

@@ -1,0 +1,104 @@
+"""A pace a clause asks and no step makes (readers.asked_paces)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.asked_paces import add_asked_paces, asked_pace
+from trajadapt.skills import bind_skills
+
+NAMES = ["kettle", "floor lamp", "lamp", "crate"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+@pytest.mark.parametrize(
+    ("clause", "step"),
+    [
+        # a speed said as a value
+        ("hold the velocity steady at 0.25", "t = set_speed(t, 0.25)"),
+        ("cruise at 0.4 speed", "t = set_speed(t, 0.4)"),
+        ("with the pace set to .3 around the crate", "t = set_speed(t, 0.3, near=detect_objects('crate'))"),
+        # slower towards the goal or the end, decelerate, accelerate: profiles
+        ("ease off as you come up to the destination", "t = speed_profile(t, 'decelerate', start=0.7)"),
+        ("ease off towards the end", "t = speed_profile(t, 'decelerate', start=0.7)"),
+        ("decelerate", "t = speed_profile(t, 'decelerate', start=0.7)"),
+        ("accelerate as you go", "t = speed_profile(t, 'accelerate')"),
+        # faster or slower: the stated factor, else the phrase table's for the amount word
+        ("crawl past the floor lamp", "t = scale_speed(t, 0.65, near=detect_objects('floor lamp'))"),
+        ("move three times as fast", "t = scale_speed(t, 3)"),
+        ("go 20% slower", "t = scale_speed(t, 0.8)"),
+        ("hurry a lot in the second half", "t = scale_speed(t, 1.6, part='second half')"),
+        ("slow down a little at the beginning", "t = scale_speed(t, 0.75, part='start')"),
+        ("pick up the pace in the first half", "t = scale_speed(t, 1.4, part='first half')"),
+    ],
+)  # fmt: skip
+def test_the_step_a_clause_asks(clause: str, step: str) -> None:
+    pace = asked_pace(clause, NAMES)
+    assert pace is not None and pace.step == step
+
+
+@pytest.mark.parametrize(
+    "clause",
+    [
+        "never go faster than 0.5",  # a limit
+        "cap the velocity at 2",  # a limit
+        "raise the speed by 0.2",  # a change by an amount
+        "don't slow down near the kettle",  # a negation
+        "it is too slow near the kettle",  # a statement of how the path is now
+        "keep the same pace",  # nothing to change
+        "go left by 0.3",  # no pace
+        "speed up near the kettle and then slow down",  # both ways in one clause
+    ],
+)  # fmt: skip
+def test_clauses_that_ask_no_pace(clause: str) -> None:
+    assert asked_pace(clause, NAMES) is None
+
+
+def test_a_dropped_speed_clause_gets_its_step_after_the_last_step() -> None:
+    code, notes = add_asked_paces(
+        program("t = shift(t, 'left', 0.2)"), ["slide left by 0.2 and take it easy near the crate"], NAMES
+    )
+    assert code == program(
+        "t = shift(t, 'left', 0.2)", "t = scale_speed(t, 0.65, near=detect_objects('crate'))"
+    )
+    assert len(notes) == 1 and "take it easy near the crate" in notes[0]
+
+
+def test_each_of_two_paces_gets_its_own_object() -> None:
+    kept = "t = scale_speed(t, 1.4, near=detect_objects('kettle'))"
+    code, _ = add_asked_paces(program(kept), ["zip past the kettle but go slowly by the crate"], NAMES)
+    assert code == program(kept, "t = scale_speed(t, 0.65, near=detect_objects('crate'))")
+
+
+@pytest.mark.parametrize(
+    "steps",
+    [
+        ("t = scale_speed(t, 0.5)",),  # placed nowhere: the speed-scope reader places it
+        ("t = scale_speed(t, 0.5, near=detect_objects('crate'))",),
+        ("t = speed_profile(t, 'decelerate')",),
+    ],
+)
+def test_a_pace_a_step_makes_is_left_alone(steps: tuple[str, ...]) -> None:
+    code = program(*steps)
+    assert add_asked_paces(code, ["dawdle near the crate"], NAMES) == (code, [])
+
+
+def test_code_that_is_not_skill_calls_alone_is_left_alone() -> None:
+    code = program("t[:, 3] = t[:, 3] * 2")
+    assert add_asked_paces(code, ["twice as fast please"], NAMES) == (code, [])
+
+
+def test_the_added_step_runs_and_makes_the_asked_speed() -> None:
+    t = np.column_stack([np.linspace(0, 1, 30), np.zeros(30), np.full(30, 0.5), np.full(30, 0.4)])
+    code, notes = read_against_words(
+        program("t = shift(t, 'up', 0.1)"), ["lift it slightly, holding the speed steady at 0.15"], NAMES
+    )
+    assert any(note.reader == "asked-paces" for note in notes)
+    namespace = {**bind_skills(), "get_trajectory": t.copy}
+    exec(code, namespace)  # skill calls alone, checked by the reader
+    assert np.allclose(namespace["modified_trajectory"][:, 3], 0.15)

@@ -52,5 +52,7 @@ def test_never_closer_than_is_a_least_distance():
     for words in (
         "make sure you're never closer than 0.3 to the drum",
         "don't get any nearer than 0.3 to the drum",
+        "never allow the arm to get closer than 0.3 to the drum",  # words between the negation and "closer"
+        "do not let the robot come any nearer than 0.3 to the drum",
     ):
         assert object_asks(words, NAMES)["drum"].relation == "away", words

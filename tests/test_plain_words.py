@@ -89,6 +89,20 @@ def test_a_word_two_objects_share_or_no_object_is_called_is_kept(words):
 
 
 @pytest.mark.parametrize(
+    ("words", "names", "plain"),
+    [
+        ("skim the bookcase", ["book case", "lamp"], "skim the book case"),
+        ("skim the book case", ["bookcase", "lamp"], "skim the bookcase"),
+        ("circle the tea-pot", ["teapot"], "circle the teapot"),
+        ("steer clear of the fire hydrant", ["firehydrant"], "steer clear of the firehydrant"),
+        ("stay left a bit", ["leftbit"], "stay left a bit"),  # split anywhere but whole words only
+    ],
+)
+def test_a_name_spaced_otherwise_is_written_as_the_scene_spells_it(words, names, plain):
+    assert plain_words(words, names, keep=lambda sentence: False) == plain
+
+
+@pytest.mark.parametrize(
     ("words", "plain"),
     [
         ("Please don't fly so near the red mug", "Please fly further from the red mug"),

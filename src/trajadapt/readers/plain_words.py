@@ -10,7 +10,8 @@ the words:
   said in words ("by three", "within two of"), becomes digits;
 - an object called by one word of its scene name ("the husky" for "Siberian husky", "the remote"
   for "remote_controller") is called by its full name, where no other object of the scene has that
-  word;
+  word, and one written with its words joined or split otherwise ("dishwasher" for "dish washer",
+  "tin-opener" for "tinopener") as the scene spells it;
 - a comparison said as what not to do ("don't walk so close to the lamp", "don't keep as much
   distance from the barn", "don't rush near the box", "don't go as slow in the middle", "don't keep
   going") is said as what to do ("walk further from the lamp", "keep less distance from the barn",
@@ -57,6 +58,7 @@ NOT_OBJECT_WORDS = frozenset(
 )
 """Words that name no object by themselves, even where a scene name holds them ("goal post")."""
 SHORTEST_NAME_WORD = 3
+SHORTEST_JOINED = 6
 
 _NEGATION = r"\b(?:do\s+not|does\s+not|did\s+not|don't|doesn't|didn't|never|not|shouldn't|mustn't|won't)\s+"
 _DEGREE = r"(?:(?:quite|nearly|anywhere\s+near|anything\s+like|remotely|all)\s+)?(?:so|as|too|that)\s+"
@@ -148,6 +150,7 @@ def _amount_in_digits(found: re.Match[str]) -> str:
 
 def _full_names(words: str, names: Sequence[str]) -> str:
     """``words`` with "the <word>" written as the one scene name that holds the word."""
+    words = _names_as_spaced(words, names)
     text = whole_words(words)
     owners: dict[str, list[str]] = {}
     for name in names:
@@ -164,6 +167,24 @@ def _full_names(words: str, names: Sequence[str]) -> str:
             words, found = short.subn(_called(name), words)
             if found:
                 break
+    return words
+
+
+def _names_as_spaced(words: str, names: Sequence[str]) -> str:
+    """``words`` with a scene name written with its words joined or split otherwise, as the scene spells it.
+
+    "dishwasher" for "dish washer", "dish washer" for "dishwasher": the same letters, spaced or
+    hyphenated otherwise (at least ``SHORTEST_JOINED`` letters, so that no short word is read as a name).
+    """
+    text = whole_words(words)
+    for name in names:
+        spelled = whole_words(name)
+        letters = spelled.replace(" ", "")
+        if len(letters) < SHORTEST_JOINED or spelled in text:
+            continue
+        splits = [rf"{letters[:i]}[\s_-]+{letters[i:]}" for i in range(SHORTEST_NAME_WORD, len(letters) - 2)]
+        respaced = re.compile(rf"\b(?:{'|'.join([re.escape(letters), *splits])})\b", re.I)
+        words = respaced.sub(name.replace("\\", "\\\\"), words)
     return words
 
 

@@ -132,13 +132,14 @@ leave to ``avoid``; only the effect's flags count it as away)."""
 
 
 MINIMUM_DISTANCE = re.compile(
-    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,2}?(?:closer|nearer|less)\s+than"
+    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?)\s*({NUMBER_TEXT})",
     re.I,
 )
 """A clearance the words state as a least distance: "at least 0.2", "no closer than 0.2", "never
-closer than 0.2", "don't get nearer than 0.2", "a minimum clearance of 0.2"."""
+closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
+between the negation and the comparison), "a minimum clearance of 0.2"."""
 
 
 def whole_words(text: str) -> str:

@@ -103,6 +103,9 @@ def test_steps_that_already_do_it_or_are_ambiguous_stay(step: str, words: str) -
         "finish at the lamp",
         "the goal should be the lamp",
         "take the lamp as the new destination, arriving there smoothly",  # named before "new"
+        "change the destination to the lamp",  # a verb that sets the goal
+        "please move the goal point onto the lamp",
+        "use the lamp as the goal and curve in gently",
     ],
 )
 def test_a_new_goal_makes_the_path_end_at_the_point_instead_of_passing_it(words: str) -> None:

@@ -96,9 +96,11 @@ def test_a_word_two_objects_share_or_no_object_is_called_is_kept(words):
         ("circle the tea-pot", ["teapot"], "circle the teapot"),
         ("steer clear of the fire hydrant", ["firehydrant"], "steer clear of the firehydrant"),
         ("stay left a bit", ["leftbit"], "stay left a bit"),  # split anywhere but whole words only
+        ("near the water spaniel, hurry", ["Irish water spaniel"], "near the Irish water spaniel, hurry"),
+        ("orbit the grand piano", ["black grand piano"], "orbit the black grand piano"),  # the rest said
     ],
 )
-def test_a_name_spaced_otherwise_is_written_as_the_scene_spells_it(words, names, plain):
+def test_a_name_spaced_otherwise_or_in_part_is_written_as_the_scene_spells_it(words, names, plain):
     assert plain_words(words, names, keep=lambda sentence: False) == plain
 
 

@@ -64,9 +64,13 @@ from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 SENTENCES = re.compile(r"[;!?]|\.(?!\d)|\b(?:then|but)\b", re.I)
 NEW_GOAL = re.compile(
     r"\bnew\s+(?:goal|end|destination)|\b(?:goal|destination)(?:\s+(?:position|point))?\s+(?:is|should be"
-    r"|becomes|will be|must be)\b|\b(?:end|finish|terminate)\s+(?:at|on|in)\b",
+    r"|becomes|will be|must be)\b|\b(?:end|finish|terminate)\s+(?:at|on|in)\b"
+    r"|\b(?:set|make|move|change|put|place|relocate)\s+(?:the\s+|its\s+)?(?:goal|destination)"
+    r"(?:\s+(?:position|point))?\s+(?:to|at|be|as|onto)\b|\bas\s+(?:the\s+|its\s+)?(?:new\s+)?(?:goal|destination)\b",
     re.I,
 )
+"""Words that give the path a new goal: "the new goal", "the goal should be", "end at", "set the goal
+to", "use X as the goal"."""
 REFERENCE = re.compile(
     r"\b(?:from|at|since|before|until|till|to|towards?|near|in|reach\w*|approach\w*|arriv\w*)\s+$", re.I
 )  # a part after these words is a place on the path, not the part that moves

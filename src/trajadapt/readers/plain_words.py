@@ -160,10 +160,12 @@ def _full_names(words: str, names: Sequence[str]) -> str:
         parts = whole_words(name).split()
         if len(parts) < 2 or whole_words(name) in text:
             continue
-        for part in parts:
+        for index, part in enumerate(parts):
             if len(part) < SHORTEST_NAME_WORD or part in NOT_OBJECT_WORDS or len(owners[part]) > 1:
                 continue
-            short = re.compile(rf"\b(the\s+){re.escape(part)}(?:s|es)?\b", re.I)
+            rest = "".join(rf"(?:[\s_-]+{re.escape(word)}" for word in parts[index + 1 :])
+            rest += ")?" * (len(parts) - index - 1)  # "the water spaniel" for "Irish water spaniel": all of it
+            short = re.compile(rf"\b(the\s+){re.escape(part)}{rest}(?:s|es)?\b", re.I)
             words, found = short.subn(_called(name), words)
             if found:
                 break

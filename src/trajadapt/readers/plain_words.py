@@ -164,7 +164,7 @@ def _full_names(words: str, names: Sequence[str]) -> str:
             if len(part) < SHORTEST_NAME_WORD or part in NOT_OBJECT_WORDS or len(owners[part]) > 1:
                 continue
             rest = "".join(rf"(?:[\s_-]+{re.escape(word)}" for word in parts[index + 1 :])
-            rest += ")?" * (len(parts) - index - 1)  # "the water spaniel" for "Irish water spaniel": all of it
+            rest += ")?" * (len(parts) - index - 1)  # "the water spaniel": all of "Irish water spaniel"
             short = re.compile(rf"\b(the\s+){re.escape(part)}{rest}(?:s|es)?\b", re.I)
             words, found = short.subn(_called(name), words)
             if found:

@@ -37,7 +37,6 @@ def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
 @pytest.mark.parametrize(
     "step",
     [
-        "t = scale_speed(t, 1.6, part='end')",  # a place of its own
         "t = set_speed(t, 0.2, detect_objects('box'))",
         "t = scale_speed(t, 1.6)\nt = scale_speed(t, 0.5)",  # which one? left alone
         "t = shift(t, 'left')",
@@ -46,3 +45,23 @@ def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
 def test_steps_with_a_place_or_ambiguous_ones_stay(step: str) -> None:
     code = CODE.format(step=step)
     assert localize_speed(code, ["go faster near the person"], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "placed"),
+    [
+        ("hurry when you pass the person", "near=detect_objects('person')"),
+        ("within 0.3 of the person, hurry", "near=detect_objects('person'), radius=0.3"),
+    ],
+)
+def test_a_part_the_words_never_name_gives_way_to_the_object(words: str, placed: str) -> None:
+    code, notes = localize_speed(
+        CODE.format(step="t = scale_speed(t, 1.4, part='second half')"), [words], NAMES
+    )
+    assert f"t = scale_speed(t, 1.4, {placed})" in code.splitlines()
+    assert len(notes) == 1
+
+
+def test_a_part_the_words_name_is_a_place_of_its_own() -> None:
+    code = CODE.format(step="t = scale_speed(t, 1.6, part='end')")
+    assert localize_speed(code, ["towards the end, go faster near the person"], NAMES) == (code, [])

@@ -62,6 +62,19 @@ def test_a_made_up_height_leaves_the_step_out_and_feedback_counts() -> None:
     assert steps(kept) == ["t = set_height(t, 0.8)"]
 
 
+@pytest.mark.parametrize(
+    ("words", "said"),
+    [
+        ("crawl way slower past the crate", "a lot"),
+        ("keep loads further from the sofa", "a lot"),
+        ("on the way to the goal go left", None),  # "way" before no comparative
+        ("tons of room around the lamp", None),
+    ],
+)
+def test_a_comparative_made_strong_is_a_lot(words: str, said: str | None) -> None:
+    assert intensity_word(words) == said
+
+
 def test_the_longest_intensity_word_wins() -> None:
     assert intensity_word("move very slightly left") == "very slightly" and intensity_word("go left") is None
 

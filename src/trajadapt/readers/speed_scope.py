@@ -5,8 +5,11 @@ spaniel": the whole path speeds up, not the part near the spaniel. When the user
 exactly one clause about speed, that clause names exactly one of the scene's objects and says
 where ("near", "close to", "passing", "in the proximity of", "within", ...), and the code has
 exactly one speed step with no place of its own (no ``near=``, ``radius=`` or ``part=``), the
-step gets ``near=detect_objects('<that object>')``. A review note says so. Measured on stored
-answers in docs/benchmarks.md.
+step gets ``near=detect_objects('<that object>')``, and the clause's reach ("within 0.1 of the
+screw") as ``radius=``. A ``part=`` the words never ask for (no word names a part or an end of
+the path: "within 0.1 of the screw, slow down" came back as ``part='second half'``) is no place of
+its own either: it gives way to the object. A review note says so. Measured on stored answers in
+docs/benchmarks.md.
 """
 
 from __future__ import annotations
@@ -16,7 +19,8 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import PLACE_WORDS, SPEED_WORDS, longest_names, names_in
+from trajadapt.readers.object_words import WITHIN
+from trajadapt.readers.words import PART_OR_END, PLACE_WORDS, SPEED_WORDS, longest_names, names_in
 
 PLACEABLE_SPEED_STEPS = ("scale_speed", "set_speed")  # the speed steps that take near=, radius=, part=
 
@@ -32,29 +36,43 @@ def scoped_object(words: str, names: Iterable[str]) -> str | None:
 
 def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one unplaced speed step placed near the object the words name, and a note."""
-    target = scoped_object(" ".join(asked), list(names))
+    words = " ".join(asked)
+    target = scoped_object(words, list(names))
     if target is None:
         return code, []
+    parts_said = PART_OR_END.search(words) is not None
     lines = code.splitlines()
-    unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line) is not None]
+    unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]
     if len(unplaced) != 1:
         return code, []
     index = unplaced[0]
-    tree, call = _unplaced_speed_call(lines[index])  # type: ignore[misc]
+    tree, call = _unplaced_speed_call(lines[index], parts_said)  # type: ignore[misc]
     point = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(target)], [])
-    call.keywords.append(ast.keyword("near", point))
+    call.keywords = [k for k in call.keywords if k.arg != "part"] + [ast.keyword("near", point)]
+    reach = WITHIN.search(_speed_clause(words, list(names)))
+    if reach is not None:
+        call.keywords.append(ast.keyword("radius", ast.Constant(float(reach.group(1)))))
     before, after = lines[index].strip(), ast.unparse(tree)
     lines[index] = in_place_of(lines[index], after)
     note = f"`{before}` -> `{after}`: the instruction changes the speed near {target}, not everywhere"
     return "\n".join(lines), [note]
 
 
-def _unplaced_speed_call(line: str) -> tuple[ast.Module, ast.Call] | None:
-    """The parsed line and its call for ``t = scale_speed(t, x)`` or ``set_speed`` with no place."""
+def _unplaced_speed_call(line: str, parts_said: bool = True) -> tuple[ast.Module, ast.Call] | None:
+    """The parsed line and its call for ``t = scale_speed(t, x)`` or ``set_speed`` with no place.
+
+    A ``part=`` is a place only where the words name a part or an end (``parts_said``).
+    """
     found = assigned_call(line)
     if found is None or found[2] not in PLACEABLE_SPEED_STEPS:
         return None
     tree, call, _ = found
-    if len(call.args) > 2 or any(k.arg in ("near", "radius", "part") for k in call.keywords):
+    places = ("near", "radius", "part") if parts_said else ("near", "radius")
+    if len(call.args) > 2 or any(k.arg in places for k in call.keywords):
         return None
     return tree, call
+
+
+def _speed_clause(words: str, names: list[str]) -> str:
+    """The one clause of ``words`` about speed (``scoped_object`` found exactly one)."""
+    return next(c for c in split_clauses(words, names) if SPEED_WORDS.search(c))

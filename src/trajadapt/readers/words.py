@@ -270,10 +270,15 @@ PLACE_GROUPS: tuple[tuple[frozenset[str], frozenset[str]], ...] = (
 """Words a user says for a place on the path, and the part or position words that name it in code."""
 
 
+STRONG_COMPARATIVE = re.compile(r"\b(?:way|loads|lots|heaps|tons|miles)\s+(?:more\b|less\b|[a-z]+er\b)", re.I)
+"""A comparative made strong by a word that is no amount elsewhere: "way slower", "loads closer"."""
+
+
 def intensity_word(words: str) -> str | None:
-    """The user's vague amount word, if any ('a lot', 'slightly', ...)."""
+    """The user's vague amount word, if any ('a lot', 'slightly', ...; "way slower" is 'a lot')."""
     lowered = words.lower()
-    return next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
+    said = next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
+    return said or ("a lot" if STRONG_COMPARATIVE.search(words) else None)
 
 
 def is_stated(value: float, numbers: list[float]) -> bool:

@@ -103,6 +103,8 @@ def test_statements(words):
         "stay above the lamp",
         "the path must avoid the lamp",
         "approach the chair and hover there",
+        "the new goal is the point between the two crates",  # said as a fact, asked as a change
+        "the new destination is beside the lamp",
     ],
 )
 def test_requests(words):

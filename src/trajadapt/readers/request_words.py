@@ -48,10 +48,11 @@ a bit low", "you went right past the mug", "why does it stop at the goal", "the 
 
 REQUESTING = re.compile(
     r"\b(?:should|must|needs? to|has to|have to|ought|want|would like|could you|can you|please|let it"
-    r"|why (?:don't|not)|how about|what about)\b",
+    r"|why (?:don't|not)|how about|what about|new (?:goal|destination|end ?point))\b",
     re.I,
 )
-"""Words that make a sentence about the path a request ("it should stop at the goal", "why not go left")."""
+"""Words that make a sentence about the path a request ("it should stop at the goal", "why not go left",
+"the new goal is the lamp")."""
 
 REASON = re.compile(r"\s+[-\u2013\u2014]+\s+|\s*[\u2013\u2014]\s*|,?\s+\b(?:because|since)\b\s+", re.I)
 """Where a reason follows the fix inside one sentence: a dash, "because", "since"."""

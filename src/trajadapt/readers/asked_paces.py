@@ -30,9 +30,9 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import after_last_step, call_of, placed_near, skill_program
+from trajadapt.code_parse import SPEED_STEPS, after_last_step, call_of, placed_near, skill_program
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.paces import speed_factor, stated_factor
+from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import (
     FASTER,
@@ -45,9 +45,6 @@ from trajadapt.readers.words import (
 )
 from trajadapt.skills import SKILL_NAMES
 from trajadapt.skills.core import NUMBER
-
-SPEED_STEPS = ("scale_speed", "set_speed", "speed_profile")
-STOP_RAMP_START = 0.7  # a slowing towards the goal runs over the last 30% of the path
 
 _CONNECTIVES = (
     r"(?:constant|steady|uniform|fixed|kept|held|set|exactly|about|around|roughly|approximately|equal"
@@ -134,34 +131,34 @@ def asked_pace(clause: str, names: list[str], variable: str = "t") -> AskedPace 
         return None
     near = _placed_object(clause, names)
     where = f", near=detect_objects({near!r})" if near else _part_argument(clause)
-    call = _stated_speed(clause, where) or _changed_pace(clause, where)
-    return None if call is None else AskedPace(clause, f"{variable} = {call.format(t=variable)}", near)
+    call = _stated_speed(clause, variable, where) or _changed_pace(clause, variable, where)
+    return None if call is None else AskedPace(clause, f"{variable} = {call}", near)
 
 
-def _stated_speed(clause: str, where: str) -> str | None:
+def _stated_speed(clause: str, t: str, where: str) -> str | None:
     """``set_speed`` of the speed the clause states as the one to keep (not a limit), if it states one."""
     stated = STATED_SPEED.search(clause)
     if stated is None or LIMIT.search(clause):
         return None
-    return f"set_speed({{t}}, {float(stated.group(1) or stated.group(2)):g}{where})"
+    return f"set_speed({t}, {float(stated.group(1) or stated.group(2)):g}{where})"
 
 
-def _changed_pace(clause: str, where: str) -> str | None:
+def _changed_pace(clause: str, t: str, where: str) -> str | None:
     """The profile or scale for a clause that asks only faster or only slower, else None."""
     slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
     if slower == faster:
         return None
     towards_the_end = GOAL.search(clause) or TOWARDS_THE_END.search(clause) or DECELERATE.search(clause)
     if slower and towards_the_end and "near=" not in where:
-        return f"speed_profile({{t}}, 'decelerate', start={STOP_RAMP_START})"
+        return f"speed_profile({t}, 'decelerate', start={STOP_RAMP_START})"
     if faster and ACCELERATE.search(clause) and not where:
-        return "speed_profile({t}, 'accelerate')"
+        return f"speed_profile({t}, 'accelerate')"
     unplaced = _without_parts(clause)  # "speed up in the first half": no factor of a half
     stated = stated_factor(unplaced, faster)
     if stated is None and NUMBER.search(unplaced):
         return None  # "raise the speed by 0.2": an amount no factor makes
     factor = stated or speed_factor(unplaced, faster)
-    return f"scale_speed({{t}}, {factor:g}{where})"
+    return f"scale_speed({t}, {factor:g}{where})"
 
 
 def _served(pace: AskedPace, places: list[str | None]) -> bool:

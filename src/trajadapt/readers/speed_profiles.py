@@ -22,6 +22,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import call_of, in_place_of
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.paces import STOP_RAMP_START
 from trajadapt.readers.words import FASTER, SLOWER, names_in
 
 TO_A_STOP = re.compile(
@@ -39,9 +40,6 @@ EVEN_PACE = re.compile(
     r"\b(?:constant|steady|uniform|same|unchanging|fixed)\s+(?:\w+\s+)?(?:speed|pace|velocity)", re.I
 )
 """Words of an even speed: a 'constant' profile is what they ask."""
-STOP_RAMP_START = 0.7
-"""Where a slowing to a stop begins: over the last 30% of the path, as the prompt's own example
-("slow down gradually towards the goal" -> ``speed_profile(t, 'decelerate', start=0.7)``)."""
 
 
 def asked_profile(words: str, names: Iterable[str]) -> str | None:

@@ -27,19 +27,26 @@ PLACEABLE_SPEED_STEPS = ("scale_speed", "set_speed")  # the speed steps that tak
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
     """The one object the one speed clause of ``words`` places the speed change at, if there is one."""
-    speed_clauses = [c for c in split_clauses(words, list(names)) if SPEED_WORDS.search(c)]
+    scoped = _scoped_clause(words, list(names))
+    return None if scoped is None else scoped[1]
+
+
+def _scoped_clause(words: str, names: list[str]) -> tuple[str, str] | None:
+    """The one speed clause of ``words`` and the one object it places the speed change at, if any."""
+    speed_clauses = [c for c in split_clauses(words, names) if SPEED_WORDS.search(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
     longest = longest_names(names_in(speed_clauses[0], names))
-    return longest[0] if len(longest) == 1 else None
+    return (speed_clauses[0], longest[0]) if len(longest) == 1 else None
 
 
 def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one unplaced speed step placed near the object the words name, and a note."""
     words = " ".join(asked)
-    target = scoped_object(words, list(names))
-    if target is None:
+    scoped = _scoped_clause(words, list(names))
+    if scoped is None:
         return code, []
+    clause, target = scoped
     parts_said = PART_OR_END.search(words) is not None
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]
@@ -49,7 +56,7 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     tree, call = _unplaced_speed_call(lines[index], parts_said)  # type: ignore[misc]
     point = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(target)], [])
     call.keywords = [k for k in call.keywords if k.arg != "part"] + [ast.keyword("near", point)]
-    reach = WITHIN.search(_speed_clause(words, list(names)))
+    reach = WITHIN.search(clause)
     if reach is not None:
         call.keywords.append(ast.keyword("radius", ast.Constant(float(reach.group(1)))))
     before, after = lines[index].strip(), ast.unparse(tree)
@@ -58,7 +65,7 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     return "\n".join(lines), [note]
 
 
-def _unplaced_speed_call(line: str, parts_said: bool = True) -> tuple[ast.Module, ast.Call] | None:
+def _unplaced_speed_call(line: str, parts_said: bool) -> tuple[ast.Module, ast.Call] | None:
     """The parsed line and its call for ``t = scale_speed(t, x)`` or ``set_speed`` with no place.
 
     A ``part=`` is a place only where the words name a part or an end (``parts_said``).
@@ -71,8 +78,3 @@ def _unplaced_speed_call(line: str, parts_said: bool = True) -> tuple[ast.Module
     if len(call.args) > 2 or any(k.arg in places for k in call.keywords):
         return None
     return tree, call
-
-
-def _speed_clause(words: str, names: list[str]) -> str:
-    """The one clause of ``words`` about speed (``scoped_object`` found exactly one)."""
-    return next(c for c in split_clauses(words, names) if SPEED_WORDS.search(c))

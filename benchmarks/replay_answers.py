@@ -30,6 +30,7 @@ from trajadapt.model.geometry import AXIS_CONVENTIONS
 from trajadapt.prompts import describe_environment
 from trajadapt.readers.request_words import request_words
 from trajadapt.session import SessionSettings
+from trajadapt.settings import CHOICES
 
 
 class StoredAnswers(Backend):
@@ -66,10 +67,10 @@ def request_key(case: Case) -> tuple[str, str]:
     return describe_environment(case), "INSTRUCTION: " + request_words(case.instruction, case.scene.names())
 
 
-def replay_settings(axes: str, read_against_words: bool = True) -> SessionSettings:
+def replay_settings(axes: str, read_against_words: bool = True, near_rule: str = "zone") -> SessionSettings:
     """The session of a replay: the stored run's axes, no repair round, no format retry."""
     return SessionSettings(axes=AXIS_CONVENTIONS[axes], repair_attempts=0, format_retries=0,
-                           read_against_words=read_against_words)  # fmt: skip
+                           read_against_words=read_against_words, near_rule=near_rule)  # fmt: skip
 
 
 def _answer_after_readers(record: dict[str, Any]) -> str:
@@ -109,6 +110,8 @@ def main() -> None:
     parser.add_argument("--no-readers", action="store_true",
                         help="run the answers as they are, without reading them against the words "
                         "(read_against_words off)")  # fmt: skip
+    parser.add_argument("--near-rule", choices=CHOICES["near_rule"], default="zone",
+                        help="what near an object means to a speed change (bench --near-rule)")  # fmt: skip
     args = parser.parse_args()
     if args.out.exists() and any(args.out.iterdir()):
         parser.error(f"{args.out} is not empty: the runner would keep its results instead of replaying; "
@@ -121,7 +124,7 @@ def main() -> None:
         axes, answer = stored[case.key]
         answers.append((request_key(load_case(case.path)), answer))
         replayed.append(case)
-    settings = replay_settings(axes, read_against_words=not args.no_readers)
+    settings = replay_settings(axes, read_against_words=not args.no_readers, near_rule=args.near_rule)
     config = BenchConfig(out_dir=args.out, session=settings, memory=args.memory)
     records = run_benchmark(replayed, StoredAnswers(answers), config)
     write_report(args.out, records)

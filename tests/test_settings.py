@@ -42,7 +42,7 @@ def test_bad_values_name_their_source(home: Path, monkeypatch: pytest.MonkeyPatc
         load_settings()
 
 
-@pytest.mark.parametrize("name", ["axes", "mode", "isolation"])
+@pytest.mark.parametrize("name", ["axes", "mode", "isolation", "near_rule"])
 def test_an_unknown_choice_in_the_environment_is_a_clear_error(
     name: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -56,11 +56,13 @@ def test_the_choices_match_what_the_code_knows() -> None:
     from trajadapt.model.geometry import AXIS_CONVENTIONS
     from trajadapt.prompts import PROMPT_MODES
     from trajadapt.settings import CHOICES
+    from trajadapt.skills.speed import NEAR_RULES
 
     assert set(CHOICES["axes"]) == set(AXIS_CONVENTIONS)
     assert set(CHOICES["mode"]) == set(PROMPT_MODES)
     assert set(CHOICES["isolation"]) == {"auto", "bwrap", "process"}
     assert set(CHOICES["robot"]) == set(ROBOT_NAMES)
+    assert set(CHOICES["near_rule"]) == set(NEAR_RULES)
 
 
 def test_an_unknown_axes_variable_fails_the_command_in_words(
@@ -93,6 +95,7 @@ ENVIRONMENT = {
     "CLAUSE_CHECK": "off",
     "SHAPE_CHECK": "off",
     "ROBOT": "drone",
+    "NEAR_RULE": "latte",
 }
 SEEN = {
     "axes": "ovita",
@@ -111,6 +114,7 @@ SEEN = {
     "clause_check": False,
     "shape_check": False,
     "robot": "drone",
+    "near_rule": "latte",
 }
 
 
@@ -147,3 +151,33 @@ def test_bench_sees_the_environment(home: Path, monkeypatch: pytest.MonkeyPatch,
     assert result.exit_code == 0, result.output
     record = json.loads(next(out.rglob("*.result.json")).read_text())
     assert {key: record["settings"][key] for key in SEEN} == SEEN
+
+
+@pytest.mark.parametrize("command", ["adapt", "bench", "serve"])
+def test_the_near_rule_flag_is_offered_with_its_choices(command: str) -> None:
+    from click.testing import CliRunner
+
+    from trajadapt.cli import cli
+
+    result = CliRunner().invoke(cli, [command, "--help"])
+    assert result.exit_code == 0 and "--near-rule [zone|latte]" in result.output
+
+
+def test_bench_records_the_near_rule_a_flag_gives(home: Path, ovita_dir: Path) -> None:
+    import json
+
+    from click.testing import CliRunner
+
+    from trajadapt.cli import cli
+
+    answers = home / "answers.json"
+    keep = json.dumps(
+        {"high_level_plan": "1) Keep.", "python_code": "modified_trajectory = get_trajectory()"}
+    )
+    answers.write_text(json.dumps([keep]))
+    out = home / "out"
+    case = ovita_dir / "latte_subset" / "latte_32.json"
+    flags = ["-b", "scripted", "-o", "answers", str(answers), "--out", str(out), "--near-rule", "latte"]
+    result = CliRunner().invoke(cli, ["bench", str(case), *flags])
+    assert result.exit_code == 0, result.output
+    assert json.loads(next(out.rglob("*.result.json")).read_text())["settings"]["near_rule"] == "latte"

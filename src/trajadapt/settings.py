@@ -41,6 +41,10 @@ class Settings:
         backend: the backend name used when none is given.
         backend_options: options for that backend (``[backend_options]`` in config.toml).
         axes: the coordinate convention stated in the prompt: ``paper`` (+X left) or ``ovita``.
+        near_rule: what "near an object" means to a speed change: ``zone`` (the default: the
+            whole change where the path passes closest, fading soon beyond) or ``latte`` (LaTTe's
+            data generator: a change that falls off with distance from the object, none where the
+            path stays far; for scoring LaTTe-style data against its references).
         mode: the prompt mode: ``skills`` (the skill library) or ``paper`` (the paper's prompt).
         temperature: sampling temperature; 0 (the default) is deterministic.
         seed: sampling seed, for reproducible answers at a temperature above 0.
@@ -81,6 +85,7 @@ class Settings:
     backend: str = "local"
     backend_options: Mapping[str, Any] = field(default_factory=dict)
     axes: Literal["paper", "ovita"] = "paper"
+    near_rule: Literal["zone", "latte"] = "zone"
     mode: Literal["skills", "paper"] = "skills"
     temperature: float = _bounded(0.0, 0.0, 2.0)
     seed: int = _bounded(0, 0, 2**31 - 1)

@@ -17,6 +17,7 @@ from trajadapt.cli.common import (
     isolation_of,
     limits_options,
     make_backend,
+    near_rule_option,
     option_option,
 )
 from trajadapt.cli.console import Progress, show_plan, show_result
@@ -95,6 +96,7 @@ from trajadapt.settings import Settings, load_settings
     default=None,
     help="Coordinate convention stated in the prompt: paper (+X left) or ovita (+X right).",
 )
+@near_rule_option
 @click.option(
     "--repairs",
     type=click.IntRange(0, 10),
@@ -146,6 +148,7 @@ def adapt(
     out: Path | None,
     plot_file: Path | None,
     axes: str | None,
+    near_rule: str | None,
     repairs: int | None,
     mode: str | None,
     examples: int | None,
@@ -163,9 +166,9 @@ def adapt(
 
     Shows the plan and code, then asks: approve, give feedback (a new plan follows), or quit.
     """
-    overrides = {"backend": backend, "axes": axes, "repair_attempts": repairs, "mode": mode, "seed": seed,
-                 "project": project_onto, "examples": examples, "grammar": grammar,
-                 "robot": robot}  # fmt: skip
+    overrides = {"backend": backend, "axes": axes, "near_rule": near_rule, "repair_attempts": repairs,
+                 "mode": mode, "seed": seed, "project": project_onto, "examples": examples,
+                 "grammar": grammar, "robot": robot}  # fmt: skip
     settings = load_settings({**overrides, "log": False if no_log else None, "temperature": temperature,
                               "memory": False if no_memory else None})  # fmt: skip
     case = _load_case(case_file, trajectory_file, scene_file, instruction, (topic, waypoints))

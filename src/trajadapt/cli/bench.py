@@ -17,6 +17,7 @@ from trajadapt.cli.common import (
     grammar_option,
     isolation_of,
     make_backend,
+    near_rule_option,
     option_option,
 )
 from trajadapt.cli.console import CaseProgress
@@ -67,6 +68,7 @@ from trajadapt.settings import load_settings
     help="Expectations TOML (default: CASES/expectations.toml or the packaged file).",
 )
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+@near_rule_option
 @click.option("--repairs", type=click.IntRange(0, 10), default=None, help="Repair rounds (default 2).")
 @click.option(
     "--waypoints-in-prompt/--summary-in-prompt",
@@ -96,6 +98,7 @@ def bench(
     rescore: bool,
     expectations: Path | None,
     axes: str | None,
+    near_rule: str | None,
     repairs: int | None,
     waypoints_in_prompt: bool | None,
     project_onto: bool | None,
@@ -110,6 +113,7 @@ def bench(
         {
             "backend": backend,
             "axes": axes,
+            "near_rule": near_rule,
             "repair_attempts": repairs,
             "waypoints_in_prompt": waypoints_in_prompt,
             "project": project_onto,

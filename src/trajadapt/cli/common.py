@@ -15,7 +15,7 @@ from trajadapt.checks.robot_limits import ROBOT_LIMITS, ROBOT_NAMES, user_constr
 from trajadapt.cli.console import PrepareBar
 from trajadapt.errors import InputError
 from trajadapt.sandbox.runner import Isolation
-from trajadapt.settings import Settings
+from trajadapt.settings import CHOICES, Settings
 
 backend_option = click.option(
     "--backend", "-b", default=None, help="Backend name (see 'trajadapt backends'); default: local."
@@ -32,6 +32,13 @@ grammar_option = click.option(
     "--grammar/--free-decoding", "grammar", default=None,
     help="Constrain a local model's answer to the skill calls and object names of the scene (skills "
     "mode; the default), or let it write any code.",
+)  # fmt: skip
+
+near_rule_option = click.option(
+    "--near-rule", type=click.Choice(CHOICES["near_rule"]), default=None,
+    help="What 'near an object' means to a speed change: zone (the default: the whole change where "
+    "the path passes closest, fading soon beyond) or latte (LaTTe's data generator: falling off "
+    "with distance from the object, none where the path stays far; for LaTTe-style data).",
 )  # fmt: skip
 
 Command = TypeVar("Command", bound=Callable[..., Any])

@@ -11,7 +11,14 @@ from typing import TYPE_CHECKING
 import click
 
 from trajadapt.checks.constraints import Constraints
-from trajadapt.cli.common import backend_option, isolation_of, limits_options, make_backend, option_option
+from trajadapt.cli.common import (
+    backend_option,
+    isolation_of,
+    limits_options,
+    make_backend,
+    near_rule_option,
+    option_option,
+)
 from trajadapt.errors import DependencyNotInstalled, InputError
 from trajadapt.files.store import Store
 from trajadapt.memory import MemoryBank
@@ -43,6 +50,7 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
               help="Use this GGUF file with the local backend.")  # fmt: skip
 @click.option("--mode", type=click.Choice(PROMPT_MODES), default=None, help="Prompt mode (default skills).")
 @click.option("--axes", type=click.Choice(sorted(AXIS_CONVENTIONS)), default=None, help="Axis convention.")
+@near_rule_option
 @click.option("--no-log", is_flag=True, help="Do not log sessions (and list no earlier ones).")
 @click.option("--no-memory", is_flag=True,
               help="Neither recall approved answers as examples nor remember new ones.")  # fmt: skip
@@ -50,8 +58,8 @@ TOKEN_ENV = "TRAJADAPT_TOKEN"
 def serve(
     host: str, port: int, cases_dir: Path | None, allow_remote: bool, token: str | None,
     allowed_hosts: tuple[str, ...], backend: str | None, options: tuple[tuple[str, str], ...],
-    model_path: Path | None, mode: str | None, axes: str | None, no_log: bool, no_memory: bool,
-    robot: str | None, limits: Constraints,
+    model_path: Path | None, mode: str | None, axes: str | None, near_rule: str | None, no_log: bool,
+    no_memory: bool, robot: str | None, limits: Constraints,
 ) -> None:  # fmt: skip
     """Serve the review page: load a case, read the plan and code, see the paths, approve or correct.
 
@@ -67,6 +75,7 @@ def serve(
         "backend": backend,
         "mode": mode,
         "axes": axes,
+        "near_rule": near_rule,
         "robot": robot,
         "log": False if no_log else None,
         "memory": False if no_memory else None,

@@ -183,7 +183,8 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
     tree = ast.parse(job["code"], GENERATED_FILENAME)
     notes: list[str] = []
     if job.get("skills"):
-        api.update(bind_skills(Axes.from_positive_x(job.get("positive_x", "left"))))
+        axes = Axes.from_positive_x(job.get("positive_x", "left"))
+        api.update(bind_skills(axes, job.get("near_rule", "zone")))
         api.update(dict.fromkeys(DETECT_ALIASES, api["detect_objects"]))
         notes += assign_discarded_results(tree, SKILL_NAMES)
         notes += measure_from_original(tree)

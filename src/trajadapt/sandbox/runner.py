@@ -52,11 +52,13 @@ class ExecutionOptions:
     Attributes:
         skills: bind the skill library's functions into the code's namespace.
         positive_x: what +X means to the user ('left' or 'right'); skills read directions with it.
+        near_rule: what "near an object" means to a speed change (``skills.speed.NEAR_RULES``).
         accept_last: when the code forgets ``modified_trajectory``, take the last (N, 4) array it built.
     """
 
     skills: bool = False
     positive_x: str = "left"
+    near_rule: str = "zone"
     accept_last: bool = False
 
 
@@ -145,6 +147,7 @@ class Sandbox:
         job = {
             "skills": chosen.skills,
             "positive_x": chosen.positive_x,
+            "near_rule": chosen.near_rule,
             "accept_last": chosen.accept_last,
             "code": code,
             "trajectory": trajectory.to_rows(),

@@ -42,7 +42,9 @@ def _findings_alone(
 ) -> tuple[list[str], float]:
     """What a clause's lines, run alone on the original path, contradict in the clause's words."""
     code = "\n".join(["t = get_trajectory()", *lines, f"{RESULT_VARIABLE} = t"])
-    options = ExecutionOptions(skills=True, positive_x=settings.axes.positive_x, accept_last=True)
+    options = ExecutionOptions(
+        skills=True, positive_x=settings.axes.positive_x, near_rule=settings.near_rule, accept_last=True
+    )
     result = sandbox.run(code, case.trajectory, case.scene, options)
     if result.error is not None or result.rows is None:
         problem = result.error.describe() if result.error else "no trajectory"

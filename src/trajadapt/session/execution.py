@@ -61,7 +61,9 @@ def execute(
             message = f"{exc} (the answer must be a program of skill calls)"
             return Execution(Failure.of("CodeRejected", message), refused=True)
     skills = settings.mode == "skills"
-    options = ExecutionOptions(skills=skills, positive_x=settings.axes.positive_x, accept_last=skills)
+    options = ExecutionOptions(
+        skills=skills, positive_x=settings.axes.positive_x, near_rule=settings.near_rule, accept_last=skills
+    )
     result = sandbox.run(code, case.trajectory, case.scene, options)
     ran = Execution(Failure("NoResult", "the code produced no trajectory"), result.stdout, result.notes,
                     seconds=result.duration_s, layers=tuple(result.layers))  # fmt: skip

@@ -24,6 +24,7 @@ class SessionSettings:
     """
 
     axes: AxisConvention = AXIS_CONVENTIONS["paper"]
+    near_rule: str = "zone"
     mode: str = "skills"
     repair_attempts: int = 2
     format_retries: int = 1

@@ -2,7 +2,7 @@
 
 The prompt's function list is rendered from ``SKILLS`` itself (name, signature, first docstring
 sentence), so the prompt and the library never drift apart. In the sandbox the functions are bound
-to the axis convention the prompt states.
+to the axis convention the prompt states and to what the user means by near (``speed.NEAR_RULES``).
 """
 
 from __future__ import annotations
@@ -56,12 +56,23 @@ SKILL_NAMES = tuple(function.__name__ for function in SKILLS)
 PROMPT_HIDDEN = frozenset({"axes", "iterations", "count", "seed", "width", "reference"})  # rarely needed
 
 
-def bind_skills(axes: Axes = PAPER_AXES) -> dict[str, Callable[..., Any]]:
-    """The skills by name, with the axis convention bound where a function takes one."""
+def bind_skills(axes: Axes = PAPER_AXES, near_rule: str = "zone") -> dict[str, Callable[..., Any]]:
+    """The skills by name, with the user's conventions bound where a function takes them.
+
+    ``axes`` is the axis convention, ``near_rule`` what "near an object" means to a speed change
+    (``speed.NEAR_RULES``).
+
+    Raises:
+        ValueError: a near_rule not in ``speed.NEAR_RULES``.
+    """
+    if near_rule not in speed.NEAR_RULES:
+        raise ValueError(f"near_rule must be one of {', '.join(speed.NEAR_RULES)}, got {near_rule!r}")
+    conventions: dict[str, Any] = {"axes": axes, "near_rule": near_rule}
     bound: dict[str, Callable[..., Any]] = {}
     for function in SKILLS:
-        if "axes" in inspect.signature(function).parameters:
-            bound[function.__name__] = functools.wraps(function)(functools.partial(function, axes=axes))
+        taken = {k: v for k, v in conventions.items() if k in inspect.signature(function).parameters}
+        if taken:
+            bound[function.__name__] = functools.wraps(function)(functools.partial(function, **taken))
         else:
             bound[function.__name__] = function
     return bound

@@ -36,23 +36,65 @@ NEAR_REACH = 0.4  # how far (fraction of the path's size) "near an object" reach
 # (calibrated on latte-dev with the factors of the prompt's phrase table: 0.2 before)
 
 
-def speed_weight(trajectory: Any, near: Any = None, radius: float | None = None, part: Any = None) -> Array:
+NEAR_RULES = ("zone", "latte")
+"""What "near an object" means to a speed change: ``zone`` (the default: the whole change at the
+path's closest pass, fading within ``NEAR_REACH`` beyond it, wherever the object is) or ``latte``
+(LaTTe's data generator: a change falling linearly from the object to nothing at a reach the
+generator draws per case, here its expectation over that range, so a path that never comes near
+the object keeps its speed)."""
+
+LATTE_REACH = (0.5, 1.5)
+"""The generator's reach as shares of the path's size: uniform in 0.3..0.9 in scenes whose paths
+span 0.6 (LaTTe's ``locality_factor``; not fitted to any case)."""
+
+
+def speed_weight(
+    trajectory: Any,
+    near: Any = None,
+    radius: float | None = None,
+    part: Any = None,
+    near_rule: str = "zone",
+) -> Array:
     """Where a speed change applies: a weight 0..1 per waypoint.
 
-    Where a speed change applies, 0..1 per waypoint: near a point, within a radius of it, in a part of
-    the path ('start', 'middle', 'end', a fraction or index pair), or everywhere.
+    Where a speed change applies, 0..1 per waypoint: near a point (as ``near_rule`` reads near),
+    within a radius of it, in a part of the path ('start', 'middle', 'end', a fraction or index
+    pair), or everywhere.
+
+    Raises:
+        ValueError: a near_rule not in ``NEAR_RULES``.
     """
     t = as_trajectory(trajectory)
     weight = np.ones(len(t))
     if near is not None:
         point = as_point(near, "near")
-        if radius is None:
+        if radius is not None:
+            weight *= within(t, point, float(radius), blend=0.25 * float(radius))
+        elif near_rule == "latte":
+            weight *= latte_field(t, point)
+        elif near_rule == "zone":
             weight *= proximity(t, point, NEAR_REACH * extent(t))
         else:
-            weight *= within(t, point, float(radius), blend=0.25 * float(radius))
+            raise ValueError(f"near_rule must be one of {', '.join(NEAR_RULES)}, got {near_rule!r}")
     if part is not None:
         weight *= part_mask(t, part)
     return weight
+
+
+def latte_field(trajectory: Array, point: Array) -> Array:
+    """LaTTe's speed field around ``point``, 0..1 per waypoint, averaged over the generator's reach.
+
+    For a reach r the field is max(0, 1 - d / r) at distance d; with r uniform in ``LATTE_REACH``
+    (times the path's size) its mean is ((b - m) - d ln(b / m)) / (b - a), m = max(a, d), for d < b.
+    """
+    low, high = (share * extent(trajectory) for share in LATTE_REACH)
+    distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
+    lower = np.clip(distance, low, None)
+    inside = distance < high
+    mean = np.zeros(len(distance))
+    d, m = distance[inside], lower[inside]
+    mean[inside] = ((high - m) - d * np.log(high / m)) / (high - low)
+    return mean
 
 
 def scale_speed(
@@ -61,16 +103,19 @@ def scale_speed(
     near: PointArg = None,
     radius: float | None = None,
     part: PartArg = None,
+    *,
+    near_rule: str = "zone",
 ) -> Array:
     """Multiply velocity by factor (0.5 half, 2 double): everywhere, near a point, or in a part.
 
     Multiply the velocity by factor (0.5 = half as fast, 2 = twice as fast), everywhere or only near a
-    point / within radius of it / in a part.
+    point / within radius of it / in a part. ``near_rule`` (bound by the sandbox from the user's
+    settings) says what near means: see ``NEAR_RULES``.
     """
     t = as_trajectory(trajectory)
     if float(factor) < 0:
         raise ValueError(f"factor must be >= 0, got {factor}")
-    weight = speed_weight(t, near, radius, part)
+    weight = speed_weight(t, near, radius, part, near_rule)
     t[:, 3] *= 1.0 + (float(factor) - 1.0) * weight
     return t
 
@@ -81,12 +126,18 @@ def set_speed(
     near: PointArg = None,
     radius: float | None = None,
     part: PartArg = None,
+    *,
+    near_rule: str = "zone",
 ) -> Array:
-    """Set the velocity to speed, everywhere or only near a point / within radius of it / in a part."""
+    """Set the velocity to speed, everywhere or only near a point / within radius of it / in a part.
+
+    ``near_rule`` (bound by the sandbox from the user's settings) says what near means: see
+    ``NEAR_RULES``.
+    """
     t = as_trajectory(trajectory)
     if float(speed) < 0:
         raise ValueError(f"speed must be >= 0, got {speed}")
-    weight = speed_weight(t, near, radius, part)
+    weight = speed_weight(t, near, radius, part, near_rule)
     t[:, 3] += (float(speed) - t[:, 3]) * weight
     return t
 

@@ -191,3 +191,30 @@ def test_a_piece_that_asks_more_than_the_one_before_is_a_clause(words, clauses):
 )
 def test_a_clause_that_only_keeps_something(clause, keeps):
     assert only_keeps(clause, NAMES) is keeps
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "the end point: drop it by 0.1",
+        "the red mug: keep well clear of it",
+        "speed: ease off near the lamp",
+        "second half: swing to the right",
+    ],
+)
+def test_a_topic_said_first_goes_with_the_request_after_its_colon(words):
+    assert split_clauses(words, NAMES) == (words,)
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        ("go left: then slow down near the box", ("go left", "slow down near the box")),
+        (
+            "two things: hug the table, then hurry past the box",
+            ("two things", "hug the table", "hurry past the box"),
+        ),
+    ],
+)
+def test_a_colon_after_a_request_or_anything_else_still_breaks(words, clauses):
+    assert split_clauses(words, NAMES) == clauses

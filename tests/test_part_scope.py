@@ -22,6 +22,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("nudge the initial 3 waypoints right", PartMove("the first 3 waypoints", "right", None, 3)),
         ("the opening four points should drop", PartMove("the first 4 waypoints", "down", None, 4)),
         ("lift the leading 7 waypoints", PartMove("the first 7 waypoints", "up", None, 7)),
+        ("the end point: drop it by 0.1", PartMove("the goal", "down", 0.1)),  # a topic said first
+        ("starting point: nudge it back", PartMove("the start", "back", None)),
     ],
 )
 def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(

@@ -156,6 +156,8 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
     """Whether a piece is a clause of its own rather than more words of the previous one."""
     if joiner.strip().lower() == "while":
         return not _only_a_place(piece, names)
+    if joiner.strip() == ":" and _only_a_topic(previous, names):
+        return False  # "start point: move it left", "the lamp: keep well away from it"
     if joiner.strip() not in ("", ",", ":", "and", "but", "also"):
         return True  # a sentence mark, "then"
     if joiner.strip() == "and" and _second_of_a_pair(previous, piece, names):
@@ -231,6 +233,20 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
         return False
     first = piece.split()[0].lower()
     return not (_is_participle(first) or first.endswith("ly"))
+
+
+TOPIC_WORDS = frozenset(
+    "first second third last final half halves quarter section segment part portion stretch leg bit "
+    "beginning ending start starting opening closing speed pace velocity height altitude".split()
+)
+"""Words that may name what a request is about when said first as its topic ("start point: ...")."""
+
+
+def _only_a_topic(piece: str, names: Sequence[str]) -> bool:
+    """Whether a piece only names what the next is about: a part, an object, the speed; no request."""
+    if said_directions(piece) or re.search(r"\d", piece):
+        return False
+    return all(word in SETTING_WORDS or word in TOPIC_WORDS for word in _content_words(piece, names))
 
 
 def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:

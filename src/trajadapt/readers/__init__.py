@@ -26,6 +26,7 @@ from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.object_mentions import chosen_referents
+from trajadapt.readers.paced_places import leave_out_moves_of_paced_places
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
 from trajadapt.readers.repeated_steps import leave_out_repeats
@@ -92,6 +93,8 @@ READERS: tuple[Reader, ...] = (
     Reader("asked-paces", "a pace a clause asks (slower, faster, a stated speed) and no step makes",
            add_asked_paces),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
+    Reader("paced-places", "a move by an object the words only place a pace near",
+           leave_out_moves_of_paced_places),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
            profile_paces),
 )  # fmt: skip

@@ -45,6 +45,9 @@ def test_marks_with_no_item_are_kept_as_said(words):
         ("keep within three of the red mug", "keep within 3 of the red mug"),
         ("go back by two", "go back by 2"),
         ("rise four units", "rise 4 units"),
+        ("back off two and a half from the table lamp", "back off 2.5 from the table lamp"),
+        ("drop it by one-and-a-quarter", "drop it by 1.25"),
+        ("3 and three quarters to the left", "3.75 to the left"),
     ],
 )
 def test_numbers_in_words_become_digits(words, plain):
@@ -58,6 +61,7 @@ def test_numbers_in_words_become_digits(words, plain):
         "go through one of the gaps",
         "stop at this point",
         "pass the waypoints two at a time",
+        "a hand and a half away",  # no number before the fraction
     ],
 )
 def test_numbers_that_are_no_distance_stay_in_words(words):

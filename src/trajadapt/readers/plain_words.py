@@ -6,8 +6,9 @@ the words:
 
 - steps given as a list ("1) go up 2) slow down", "- go up" on its own line) become sentences, so
   that a list number is never read as an amount;
-- a number said in words with a decimal point ("zero point three", "point two"), or a distance
-  said in words ("by three", "within two of"), becomes digits;
+- a number said in words with a decimal point ("zero point three", "point two") or with a fraction
+  ("one and a half", "2 and a quarter"), or a distance said in words ("by three", "within two of"),
+  becomes digits;
 - an object called by one word of its scene name ("the husky" for "Siberian husky", "the remote"
   for "remote_controller") is called by its full name, where no other object of the scene has that
   word, and one written with its words joined or split otherwise ("dishwasher" for "dish washer",
@@ -49,6 +50,10 @@ AMOUNT_IN_WORDS = re.compile(
     re.I,
 )
 """A whole amount said in words where it is a distance: "by three", "within two of", "two units"."""
+FRACTIONS = {"a half": ".5", "a quarter": ".25", "three quarters": ".75"}
+_FRACTION = "|".join(fraction.replace(" ", r"[\s-]+") for fraction in FRACTIONS)
+AND_A_FRACTION = re.compile(rf"\b({_CARDINAL}|\d+)[\s-]+and[\s-]+({_FRACTION})\b", re.I)
+"""A whole and a fraction said in words: "one and a half", "2 and a quarter", "two-and-three-quarters"."""
 
 NOT_OBJECT_WORDS = frozenset(
     "goal start end path trajectory route way point points waypoint waypoints middle side top bottom "
@@ -137,8 +142,14 @@ def _decimals_in_digits(words: str) -> str:
         whole = _DIGITS[found.group(1).lower()] if found.group(1) else "0"
         return whole + "." + "".join(_DIGITS[d.lower()] for d in found.group(2).split())
 
-    words = DECIMAL_IN_WORDS.sub(digits, words)
+    words = AND_A_FRACTION.sub(_and_a_fraction, DECIMAL_IN_WORDS.sub(digits, words))
     return AMOUNT_IN_WORDS.sub(_amount_in_digits, words)
+
+
+def _and_a_fraction(found: re.Match[str]) -> str:
+    """A whole and a fraction in digits: 'one and a half' -> '1.5'."""
+    whole = _CARDINALS.get(found.group(1).lower(), found.group(1))
+    return whole + FRACTIONS[" ".join(re.split(r"[\s-]+", found.group(2).lower()))]
 
 
 def _amount_in_digits(found: re.Match[str]) -> str:

@@ -54,9 +54,9 @@ LEAD_INS = re.compile(
 
 FILLER = frozenset(
     "a an the of to and or by from with as you it its is are be all way both sides side more much "
-    "very bit little lot slightly than too so just then also please".split()
+    "very bit little lot slightly than too so just then also please s re ve ll m d".split()
 )
-"""Words that carry no request of their own."""
+"""Words that carry no request of their own (with the ends of "it's", "you're", "we've", "it'll")."""
 
 AS_YOU_GO = re.compile(r" as you (?:go|move|travel|pass) ")
 

@@ -53,10 +53,12 @@ GO_TO = re.compile(
     r"\b(?:approach\w*|(?:go|goes|going|head\w*|fly|flies|flying|move\w*|travel\w*|proceed\w*|walk\w*"
     r"|drive\w*|return\w*|come|coming|continu\w*|carry\w*\s+on|steer\w*|navigat\w*|make\s+\w+\s+way)"
     r"(?:\s+\w+){0,2}?\s+(?:to|towards?|for|into)\b"
+    r"|\w+\s+(?:over|across|straight|directly|right|on|back)\s+(?:to|towards?|into)\b"
     r"|(?:extend\w*|lengthen\w*|prolong\w*)(?:\s+\w+){0,5}?\s+(?:to|towards?|until|till|reach\w*)\b)",
     re.I,
 )
-"""Words that say where to go: "approach", "head over to", "fly up to", "go straight for", "extend it
+"""Words that say where to go: "approach", "head over to", "fly up to", "go straight for", any verb
+with "over/across/straight/back to" ("swing over to", "cut across to"), "extend it
 until it reaches"."""
 EXTENDING = re.compile(r"\b(?:extend\w*|lengthen\w*|prolong\w*)\b(?!.*\d)", re.I)
 """A clause that lengthens the path, with no number: the path goes on past its goal, where it says."""

@@ -46,3 +46,29 @@ def test_exaggeration_for_a_straighter_path_becomes_smoothing() -> None:
 def test_a_step_that_agrees_stays() -> None:
     code = program("t = exaggerate_curve(t, 1.5)")
     assert bend_as_asked(code, ["more curved please"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "after"),
+    [
+        ("give the route a wider arc", "t = shift(t, 'up', 0.1)", "t = exaggerate_curve(t)"),
+        ("flatten out the curve", "t = shift(t, 'left')", "t = smooth(t)"),
+    ],
+)
+def test_a_shift_in_a_direction_nobody_said_stands_for_the_asked_bend(
+    words: str, step: str, after: str
+) -> None:
+    code, notes = bend_as_asked(program(step), [words])
+    assert code == program(after)
+    assert "say no direction" in notes[0]
+
+
+def test_a_said_direction_keeps_its_shift_and_the_bend_is_not_added_beside_steps() -> None:
+    code = program("t = shift(t, 'left', 0.2)")
+    assert bend_as_asked(code, ["curve it more and move it left by 0.2"]) == (code, [])
+
+
+def test_a_program_of_no_step_gets_the_asked_bend() -> None:
+    code, notes = bend_as_asked(program(), ["could the route bend a bit more?"])
+    assert code == program("t = exaggerate_curve(t)")
+    assert notes == ["added `t = exaggerate_curve(t)`: the words ask the path to bend more and no step does"]

@@ -7,8 +7,10 @@ curvature", "exaggerate the bends", "a wider arc") or after it ("curve more", "b
 less when they ask it straight ("straighten", "flatten the curve", "less curved", "fewer bends").
 When they ask one and not the other, a step that does the other is replaced: ``smooth`` by
 ``exaggerate_curve(t)`` for more, ``exaggerate_curve`` by ``smooth(t)`` for less ("smoothly" says
-how, and asks neither). Code that is not made of skill calls alone is left alone. A review note
-says what changed and why.
+how, and asks neither). When no step bends either way, the asked step takes the place of a
+whole-path ``shift`` in a direction the words never say ("make the trajectory curvier" came back as
+``shift(t, 'right', 0.15)``), or is added to a program of no step at all. Code that is not made of skill calls
+alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -16,7 +18,15 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import called_name, in_place_of, skill_program
+from trajadapt.code_parse import (
+    after_last_step,
+    call_of,
+    called_name,
+    direction_argument,
+    in_place_of,
+    skill_program,
+)
+from trajadapt.readers.words import said_directions
 from trajadapt.skills import SKILL_NAMES
 
 _BENDING = r"(?:curv\w*|bend\w*|arc\w*)"
@@ -46,8 +56,9 @@ def asked_curve(words: str) -> str | None:
 def bend_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with each step that bends the path the other way replaced (see the module)."""
     lines = code.splitlines()
-    program = skill_program(lines, SKILL_NAMES)
-    ask = asked_curve(" ".join(asked))
+    words = " ".join(asked)
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    ask = asked_curve(words)
     if program is None or ask is None:
         return code, []
     wrong, right = OPPOSITE[ask]
@@ -58,4 +69,22 @@ def bend_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         if called_name(line) == wrong:
             notes.append(f"`{line.strip()}` -> `{step}`: the words ask the path to bend {ask}")
             lines[index] = in_place_of(line, step)
+    if not notes and not any(called_name(line) == right.split("(")[0] for line in lines):
+        _bend_where_none_does(lines, notes, step, ask, words)
     return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _bend_where_none_does(lines: list[str], notes: list[str], step: str, ask: str, words: str) -> None:
+    """The asked bend, for a whole-path shift in a direction nobody said, or in a program of no step."""
+    said = said_directions(words)
+    for index, line in enumerate(lines):
+        direction = direction_argument(call_of(line, ("shift",)))
+        if direction is not None and direction not in said:
+            notes.append(f"`{line.strip()}` -> `{step}`: the words ask the path to bend {ask}, and "
+                         f"say no direction {direction}")  # fmt: skip
+            lines[index] = in_place_of(line, step)
+            return
+    if any(called_name(line) in SKILL_NAMES for line in lines):
+        return
+    lines.insert(after_last_step(lines, SKILL_NAMES), step)
+    notes.append(f"added `{step}`: the words ask the path to bend {ask} and no step does")

@@ -71,6 +71,9 @@ def test_a_whole_path_shift_becomes_a_shift_of_the_start_and_keeps_its_amount() 
         ("t = shift_part(t, 'up', part='end')", "head for the upper region", "t = shift(t, 'up')"),
         ("t = shift_part(t, 'down', 0.1, part='end')", "sink into the lower part by 0.1", "t = shift(t, 'down', 0.1)"),
         ("t = move_closer(t, detect_objects('goal'))", "once at the goal, keep moving for another 0.4", "t = extend(t, 0.4)"),
+        # past the goal, a shift nobody's words say stands for the move ("back up" is back)
+        ("t = shift(t, 'down', 0.7)", "when it's reached the end, pull back 0.7", "t = extend(t, 0.7, 'back')"),
+        ("t = shift(t, 'up', 2)", "once you're at the destination, back up by 2", "t = extend(t, 2, 'back')"),
     ],
 )  # fmt: skip
 def test_the_step_written_for_the_part_is_replaced(step: str, words: str, expected: str) -> None:

@@ -352,11 +352,14 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
     """The line written for ``move`` and the amount it gave, or (None, None) when none or several.
 
     A move past the goal takes any shift in its direction (``shift_start(t, 'back')`` for "once the
-    goal is reached, retreat back"); with no direction, one in a direction the words never say.
+    goal is reached, retreat back"); with no direction, or none in its direction, one in a direction
+    the words never say ("have it back up by 1.5" answered with ``shift(t, 'up', 1.5)``).
     """
     shifts = (*SHIFTS, "shift_start", "shift_part") if move.part == "past the goal" else SHIFTS[:1]
-    wanted = (lambda d: d is not None and d not in said) if move.direction is None else move.direction.__eq__
-    written = [(i, call) for i, call in _calls(lines, shifts) if wanted(direction_argument(call))]
+    unsaid = [(i, call) for i, call in _calls(lines, shifts) if direction_argument(call) not in (*said, None)]
+    written = [(i, call) for i, call in _calls(lines, shifts) if direction_argument(call) == move.direction]
+    if move.direction is None or (not written and move.part == "past the goal"):
+        written = unsaid
     if not written:
         written = [(i, call) for i, call in _calls(lines, LANDMARK_STEPS) if _on_landmark(call)]
         return (written[0][0], None) if len(written) == 1 else (None, None)

@@ -53,6 +53,8 @@ def test_a_lead_in_goes_with_the_request_it_sets():
         "after reaching the goal, go left by 0.2",
     )
     assert split_clauses("once there, circle the lamp twice", NAMES) == ("once there, circle the lamp twice",)
+    said = "when you're at the goal position, head to the lamp"  # a contraction's end is filler
+    assert split_clauses(said, NAMES) == (said,)
 
 
 @pytest.mark.parametrize(

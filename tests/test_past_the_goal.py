@@ -33,6 +33,8 @@ def program(*steps: str) -> str:
         ("prolong the route until it gets to the shelf", "shelf"),  # lengthening is going past the goal
         ("extend it by 0.3 toward the shelf", None),  # a length: not to the shelf itself
         ("extend the path and slow down near the vase", None),  # the vase is no place to go
+        ("once at the goal, nip across to the shelf", "shelf"),  # any verb with "across to"
+        ("when you're done at the goal, scoot back to the cup", "cup"),
     ],
 )  # fmt: skip
 def test_the_place_to_go_after_the_goal(words: str, destination: str | None) -> None:

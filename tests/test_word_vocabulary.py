@@ -31,6 +31,9 @@ from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_direction
         ("shed a little height near the goal", "down"),
         ("decrease the elevation of the route", "down"),
         ("back the arm up a little", "back"),  # a phrasal verb, not up
+        # reversing or retreating as a move (session 25)
+        ("reverse 0.4 once you are done", "back"),
+        ("retreating slightly from the start", "back"),
     ],
 )
 def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> None:
@@ -50,6 +53,8 @@ def test_a_verb_of_motion_names_its_direction(words: str, direction: str) -> Non
         "at a height of 0.5",
         "speed things up past the lamp",  # a pace verb with its object between
         "slow the robot down there",
+        "reverse the order of the points",  # the path's order, no move
+        "reverse its direction",
     ],
 )
 def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> None:

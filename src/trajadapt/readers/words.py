@@ -176,6 +176,13 @@ BACK_UP = re.compile(
     r"\bback(?:s|ed|ing)?\s+(?:(?:it|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|arm))\s+)?up\b", re.I
 )
 """The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
+REVERSING = re.compile(
+    r"\b(?:revers(?:e|es|ed|ing)|retreat(?:s|ed|ing)?)\b"
+    r"(?!\s+(?:the|its|this|that|it|them|order|direction|course|sequence|waypoints?|points?)\b)",
+    re.I,
+)
+"""Reversing or retreating as a move ("reverse by 3", "retreat a little"): backwards. Reversing the
+path, its order or its direction is no move that way."""
 
 DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 """Every word that names a direction, to its canonical direction."""
@@ -210,10 +217,12 @@ def said_directions(words: str) -> set[str]:
     A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
     (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
     ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
-    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up" is back.
+    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up", "reverse by 3" and
+    "retreat a little" are back (``BACK_UP``, ``REVERSING``).
     """
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
     text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
+    text = REVERSING.sub(" back ", text)
     return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 

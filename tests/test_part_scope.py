@@ -24,6 +24,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("lift the leading 7 waypoints", PartMove("the first 7 waypoints", "up", None, 7)),
         ("the end point: drop it by 0.1", PartMove("the goal", "down", 0.1)),  # a topic said first
         ("starting point: nudge it back", PartMove("the start", "back", None)),
+        # "there" right after a clause naming the goal is the goal
+        ("head for the goal as before; when it's there, drift 0.1 up", PartMove("past the goal", "up", 0.1)),
     ],
 )
 def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(
@@ -41,6 +43,7 @@ def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(
         "start going up by 0.2",  # 'start' as a verb
         "lower the speed near the end point",
         "shift the start point up-left",  # two directions: which part moves where?
+        "go past the lamp; once there, drift 0.1 up",  # "there" is the lamp: no goal before it
     ],
 )
 def test_clauses_that_keep_a_part_or_say_no_move_of_it_ask_nothing(words: str) -> None:

@@ -92,6 +92,8 @@ REGION = re.compile(
     re.I,
 )
 """A region of the scene named like a part ("the bottom part", "the left side"): no part of the path."""
+THERE = re.compile(r"\bthere\b", re.I)
+"""A word that points back to a place said before."""
 LANDMARK_STEPS = ("move_closer", "move_away", "append_segment")
 """Steps a small model writes with the path's own start or goal as their point (a segment appended
 to the goal goes nowhere)."""
@@ -125,10 +127,15 @@ class PartMove:
 
 
 def part_moves(words: str) -> list[PartMove]:
-    """The part moves the clauses of ``words`` ask for (see the module docstring)."""
-    moves = []
+    """The part moves the clauses of ``words`` ask for (see the module docstring).
+
+    "There" in the clause right after one that names the goal is the goal ("don't stop at the goal;
+    once you get there, carry on further").
+    """
+    moves, goal_before = [], False
     for clause in split_clauses(words):
-        move = _clause_move(clause)
+        move = _clause_move(THERE.sub("at the goal", clause) if goal_before else clause)
+        goal_before = bool(GOAL.search(clause))
         if move is not None:
             moves.append(move)
     return moves

@@ -9,8 +9,8 @@ When they ask one and not the other, a step that does the other is replaced: ``s
 ``exaggerate_curve(t)`` for more, ``exaggerate_curve`` by ``smooth(t)`` for less ("smoothly" says
 how, and asks neither). When no step bends either way, the asked step takes the place of a
 whole-path ``shift`` in a direction the words never say ("make the trajectory curvier" came back as
-``shift(t, 'right', 0.15)``), or is added to a program of no step at all. Code that is not made of skill calls
-alone is left alone. A review note says what changed and why.
+``shift(t, 'right', 0.15)``), or is added to a program of no step at all. Code that is not made of
+skill calls alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -69,7 +69,7 @@ def bend_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         if called_name(line) == wrong:
             notes.append(f"`{line.strip()}` -> `{step}`: the words ask the path to bend {ask}")
             lines[index] = in_place_of(line, step)
-    if not notes and not any(called_name(line) == right.split("(")[0] for line in lines):
+    if not notes and not any(called_name(line) == called_name(step) for line in lines):
         _bend_where_none_does(lines, notes, step, ask, words)
     return ("\n".join(lines), notes) if notes else (code, [])
 

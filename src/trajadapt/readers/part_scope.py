@@ -363,10 +363,10 @@ def _step_for(move: PartMove, lines: list[str], said: set[str]) -> tuple[int | N
     the words never say ("have it back up by 1.5" answered with ``shift(t, 'up', 1.5)``).
     """
     shifts = (*SHIFTS, "shift_start", "shift_part") if move.part == "past the goal" else SHIFTS[:1]
-    unsaid = [(i, call) for i, call in _calls(lines, shifts) if direction_argument(call) not in (*said, None)]
-    written = [(i, call) for i, call in _calls(lines, shifts) if direction_argument(call) == move.direction]
+    found = [(i, call, direction_argument(call)) for i, call in _calls(lines, shifts)]
+    written = [(i, call) for i, call, direction in found if direction == move.direction]
     if move.direction is None or (not written and move.part == "past the goal"):
-        written = unsaid
+        written = [(i, call) for i, call, direction in found if direction not in (*said, None)]
     if not written:
         written = [(i, call) for i, call in _calls(lines, LANDMARK_STEPS) if _on_landmark(call)]
         return (written[0][0], None) if len(written) == 1 else (None, None)

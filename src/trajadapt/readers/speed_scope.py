@@ -17,12 +17,10 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, in_place_of
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN
 from trajadapt.readers.words import PART_OR_END, PLACE_WORDS, SPEED_WORDS, longest_names, names_in
-
-PLACEABLE_SPEED_STEPS = ("scale_speed", "set_speed")  # the speed steps that take near=, radius=, part=
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
@@ -71,7 +69,7 @@ def _unplaced_speed_call(line: str, parts_said: bool) -> tuple[ast.Module, ast.C
     A ``part=`` is a place only where the words name a part or an end (``parts_said``).
     """
     found = assigned_call(line)
-    if found is None or found[2] not in PLACEABLE_SPEED_STEPS:
+    if found is None or found[2] not in PLACED_SPEED_STEPS:
         return None
     tree, call, _ = found
     places = ("near", "radius", "part") if parts_said else ("near", "radius")

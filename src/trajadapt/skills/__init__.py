@@ -65,9 +65,7 @@ def bind_skills(axes: Axes = PAPER_AXES, near_rule: str = "zone") -> dict[str, C
     Raises:
         ValueError: a near_rule not in ``speed.NEAR_RULES``.
     """
-    if near_rule not in speed.NEAR_RULES:
-        raise ValueError(f"near_rule must be one of {', '.join(speed.NEAR_RULES)}, got {near_rule!r}")
-    conventions: dict[str, Any] = {"axes": axes, "near_rule": near_rule}
+    conventions: dict[str, Any] = {"axes": axes, "near_rule": speed.checked_near_rule(near_rule)}
     bound: dict[str, Callable[..., Any]] = {}
     for function in SKILLS:
         taken = {k: v for k, v in conventions.items() if k in inspect.signature(function).parameters}

@@ -48,6 +48,17 @@ LATTE_REACH = (0.5, 1.5)
 span 0.6 (LaTTe's ``locality_factor``; not fitted to any case)."""
 
 
+def checked_near_rule(near_rule: str) -> str:
+    """``near_rule`` itself, when it is one of ``NEAR_RULES``.
+
+    Raises:
+        ValueError: any other value, with the rules that exist.
+    """
+    if near_rule not in NEAR_RULES:
+        raise ValueError(f"near_rule must be one of {', '.join(NEAR_RULES)}, got {near_rule!r}")
+    return near_rule
+
+
 def speed_weight(
     trajectory: Any,
     near: Any = None,
@@ -70,12 +81,10 @@ def speed_weight(
         point = as_point(near, "near")
         if radius is not None:
             weight *= within(t, point, float(radius), blend=0.25 * float(radius))
-        elif near_rule == "latte":
+        elif checked_near_rule(near_rule) == "latte":
             weight *= latte_field(t, point)
-        elif near_rule == "zone":
-            weight *= proximity(t, point, NEAR_REACH * extent(t))
         else:
-            raise ValueError(f"near_rule must be one of {', '.join(NEAR_RULES)}, got {near_rule!r}")
+            weight *= proximity(t, point, NEAR_REACH * extent(t))
     if part is not None:
         weight *= part_mask(t, part)
     return weight

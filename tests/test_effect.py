@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.checks.effect import contradictions, measure_effect
+from trajadapt.checks.contradictions import contradictions
+from trajadapt.checks.effect import measure_effect
 from trajadapt.model.geometry import Axes
 from trajadapt.model.scene import SceneObject
 from trajadapt.model.trajectory import Trajectory

@@ -5,8 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.checks.effect import AWAY as EFFECT_AWAY
-from trajadapt.checks.effect import FASTER as EFFECT_FASTER
+from trajadapt.checks import contradictions as effect_flags
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.model.geometry import PAPER_AXES
 from trajadapt.readers.object_words import object_asks
@@ -122,7 +121,8 @@ def test_halving_states_a_half(words: str) -> None:
 
 
 def test_the_effect_flags_use_the_same_words() -> None:
-    assert EFFECT_AWAY is AWAY and EFFECT_FASTER is FASTER
+    assert effect_flags.FASTER is FASTER and effect_flags.SLOWER is SLOWER
+    assert effect_flags.object_asks is object_asks  # closer and away: the readers' own reading
 
 
 def test_a_skill_still_takes_only_direction_words() -> None:

@@ -77,7 +77,7 @@ class Settings:
             the answer with fewer such findings is kept.
         robot: whose limits every result must keep (``robot_limits``): ``none``, ``arm``, ``drone``
             or ``ground``.
-        repair_contradictions: when a result contradicts the instruction's words (effect.py), ask the
+        repair_contradictions: when a result contradicts the words (``checks.contradictions``), ask the
             model once more with the contradiction, and keep the new result if it contradicts less.
     """
 

@@ -1,17 +1,15 @@
-"""What an adaptation actually did, measured on the two trajectories, and what contradicts the words.
+"""What an adaptation actually did, measured on the two trajectories.
 
 ``measure_effect`` compares the original and the adapted trajectory: start and goal moved (how far,
 which way in the stated axis convention), the largest and mean displacement and where along the
 path, the closest distance to each object and the speed near it before and after, mean speed, path
 length, waypoint count and time to traverse; where the result was projected onto constraints, which
-constraint moved which waypoints. ``contradictions`` reads the instruction for the few
-things that can be checked without an LLM (an object named whose distance did not change, "slower"
-while the speed rose, "left" while the path moved right) and flags them for the reviewer.
+constraint moved which waypoints. What the effect contradicts in the user's words is read in
+``checks.contradictions``.
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
 
@@ -19,10 +17,9 @@ import numpy as np
 import numpy.typing as npt
 
 from trajadapt.checks.constraints import ConstraintMove
-from trajadapt.model.geometry import DIRECTIONS, OPPOSITE_DIRECTIONS, Axes, extent, progress
+from trajadapt.model.geometry import Axes, extent, progress
 from trajadapt.model.scene import SceneObject
 from trajadapt.model.trajectory import Trajectory
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions
 
 Array = npt.NDArray[np.float64]
 NEAR_SHARE = 0.25  # the share of waypoints nearest an object whose speed counts as "near" it
@@ -31,13 +28,18 @@ NOTICEABLE = 0.02  # of the original's size: smaller changes read as "no change"
 
 @dataclass(frozen=True)
 class ObjectEffect:
-    """Closest distance to one object and the mean speed near it, before and after."""
+    """Closest distance to one object, the mean distance and speed near it, before and after.
+
+    "Near" is the ``NEAR_SHARE`` of waypoints nearest the object, on each path.
+    """
 
     name: str
     closest_before: float
     closest_after: float
     speed_near_before: float
     speed_near_after: float
+    near_before: float
+    near_after: float
 
 
 @dataclass(frozen=True)
@@ -129,17 +131,19 @@ def _duration(t: Array) -> float | None:
 def _object_effect(obj: SceneObject, original: Array, adapted: Array) -> ObjectEffect:
     point = np.array([obj.x, obj.y, obj.z])
 
-    def near_speed(t: Array) -> float:
+    def nearest(t: Array) -> tuple[Array, npt.NDArray[np.intp]]:
         distance = np.linalg.norm(t[:, :3] - point, axis=1)
-        nearest = np.argsort(distance)[: max(2, int(NEAR_SHARE * len(t)))]
-        return float(t[nearest, 3].mean())
+        return distance, np.argsort(distance)[: max(2, int(NEAR_SHARE * len(t)))]
 
+    (before, near), (after, near_adapted) = nearest(original), nearest(adapted)
     return ObjectEffect(
         obj.name,
-        float(np.linalg.norm(original[:, :3] - point, axis=1).min()),
-        float(np.linalg.norm(adapted[:, :3] - point, axis=1).min()),
-        near_speed(original),
-        near_speed(adapted),
+        closest_before=float(before.min()),
+        closest_after=float(after.min()),
+        speed_near_before=float(original[near, 3].mean()),
+        speed_near_after=float(adapted[near_adapted, 3].mean()),
+        near_before=float(before[near].mean()),
+        near_after=float(after[near_adapted].mean()),
     )
 
 
@@ -176,66 +180,3 @@ def measure_effect(
         duration_after=_duration(after),
         objects=tuple(_object_effect(obj, before, after) for obj in objects),
     )
-
-
-AVOIDED = re.compile(r"\b(?:avoid\w*|clear of)\b", re.I)
-"""Words that ask a clearance: the flags read them as asking away (the readers leave them to ``avoid``)."""
-
-
-def _asks_away(text: str) -> bool:
-    """Whether the words ask to keep further from something (``AWAY``, or a clearance: ``AVOIDED``)."""
-    return bool(AWAY.search(text) or AVOIDED.search(text))
-
-
-def contradictions(instruction: str, effect: Effect, axes: Axes | None = None) -> list[str]:
-    """What the measured effect contradicts in the instruction's words; [] when nothing can be read."""
-    text = instruction.lower()
-    noticeable = NOTICEABLE * effect.size
-    flags = _speed_flags(text, effect)
-    for obj in effect.objects:
-        if obj.name.lower() in text:
-            flags += _object_flags(text, obj, noticeable)
-    flags += _direction_flags(text, effect, noticeable, axes or Axes())
-    return flags
-
-
-def _speed_flags(text: str, effect: Effect) -> list[str]:
-    change = effect.speed_after - effect.speed_before
-    tiny = 1e-9 * max(effect.speed_before, 1.0)
-    slower, faster = bool(SLOWER.search(text)), bool(FASTER.search(text))
-    before_after = f"({effect.speed_before:.3g} -> {effect.speed_after:.3g})"
-    if slower and not faster and change > tiny:
-        return [f"the instruction asks for slower, but the mean speed rose {before_after}"]
-    if faster and not slower and change < -tiny:
-        return [f"the instruction asks for faster, but the mean speed fell {before_after}"]
-    return []
-
-
-def _object_flags(text: str, obj: ObjectEffect, noticeable: float) -> list[str]:
-    change = obj.closest_after - obj.closest_before
-    distances = f"({obj.closest_before:.3g} -> {obj.closest_after:.3g})"
-    speed_changed = abs(obj.speed_near_after - obj.speed_near_before) > 1e-6 * max(obj.speed_near_before, 1)
-    if abs(change) <= noticeable and not speed_changed:
-        return [f"the instruction names the {obj.name}, but neither the distance to it {distances} "
-                "nor the speed near it changed"]  # fmt: skip
-    away = _asks_away(text)
-    if CLOSER.search(text) and not away and change > noticeable:
-        return [
-            f"the instruction asks to get closer to the {obj.name}, but the closest distance grew {distances}"
-        ]
-    if away and not CLOSER.search(text) and change < -noticeable:
-        return [f"the instruction asks to keep away from the {obj.name}, but the distance shrank {distances}"]
-    return []
-
-
-def _direction_flags(text: str, effect: Effect, noticeable: float, axes: Axes) -> list[str]:
-    words = said_directions(text)  # "slow down" says no direction
-    named = [w for w in DIRECTIONS if w in words]
-    if len(named) != 1 or OPPOSITE_DIRECTIONS[named[0]] in words or CLOSER.search(text) or _asks_away(text):
-        return []  # several directions, or relative to an object: no single expected sign
-    along = float(np.asarray(effect.mean_shift) @ axes.vector(named[0]))
-    if along < -noticeable:
-        return [
-            f"the instruction says {named[0]}, but the path moved {effect.mean_shift_direction} on average"
-        ]
-    return []

@@ -15,7 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from trajadapt.checks.effect import NOTICEABLE, Effect, contradictions
+from trajadapt.checks.contradictions import contradictions
+from trajadapt.checks.effect import NOTICEABLE, Effect
 from trajadapt.model.geometry import Axes
 from trajadapt.readers.words import asked_kinds, asks_distance, names_in, said_directions
 

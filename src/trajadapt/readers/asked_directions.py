@@ -60,7 +60,7 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     added: list[str] = []
     notes: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):
-        direction = _asked_move(clause)
+        direction = asked_move(clause)
         if direction is None or direction in moved or OPPOSITE_DIRECTIONS[direction] in against:
             continue
         if heights and direction in ("up", "down"):
@@ -89,7 +89,7 @@ def _directions(line: str) -> set[str]:
     }
 
 
-def _asked_move(clause: str) -> str | None:
+def asked_move(clause: str) -> str | None:
     """The one direction the clause asks the path to move in, or None."""
     directions = said_directions(clause)
     if len(directions) != 1:

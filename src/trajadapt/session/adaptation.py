@@ -14,7 +14,8 @@ from dataclasses import replace
 from typing import Any
 
 from trajadapt.backends.base import ChatMessage, ChatRequest
-from trajadapt.checks.effect import contradictions, measure_effect
+from trajadapt.checks.contradictions import contradictions
+from trajadapt.checks.effect import measure_effect
 from trajadapt.checks.review import ReviewNote, review_notes
 from trajadapt.clauses.shape import STEPS_PER_CLAUSE, asking_clauses, shape_findings
 from trajadapt.errors import AnswerParseError, BackendError, SessionStateError
@@ -307,7 +308,7 @@ class AdaptationSession(Conversation):
         effect = replace(effect, constraint_moves=run.moves)
         return {
             "effect": effect,
-            "contradictions": tuple(contradictions(" ".join(self._asked), effect, axes)),
+            "contradictions": tuple(contradictions(self._asked, effect, axes)),
         }
 
     def _notes(self, run: Execution) -> tuple[ReviewNote, ...]:

@@ -6,7 +6,9 @@ know (latte-dev's paths are 0.6 wide: a third of the scene). In skills code, a n
 where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``move_away``'s,
 ``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
 converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
-or removed so that the skill's calibrated default applies; so is a made-up ``radius`` of a speed
+or removed so that the skill's calibrated default applies; so is an amount word passed as a distance
+where the words say none at all (``extend(t, 'a bit', 'back')`` for "move back some distance":
+copied from an example, as no argument should be), and a made-up ``radius`` of a speed
 change (``set_speed(t, 5, near=box, radius=1.0)`` on a 100-unit map reached no waypoint). A speed
 factor the user never gave (``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated
 factor of the prompt's phrase table for the words of the speed's own clause ('a bit', none, 'a
@@ -24,7 +26,7 @@ from collections.abc import Iterable
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
 from trajadapt.readers.paces import speed_factor, stated_factor
-from trajadapt.readers.words import FASTER, SLOWER, intensity_word, is_stated, stated_numbers
+from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
@@ -54,11 +56,18 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
             used = "the factor the words state" if stated else used
         if changed is not None and changed != line.strip():
             notes.append(
-                f"`{line.strip()}` -> `{changed}`: the instruction gives no such number, so {used} is used"
+                f"`{line.strip()}` -> `{changed}`: the instruction gives no such {_what(line, changed)}, "
+                f"so {used} is used"
             )
             line = in_place_of(line, changed)
         lines.append(line)
     return "\n".join(lines), notes
+
+
+def _what(line: str, changed: str) -> str:
+    """What was made up in ``line``: an amount 'word' it had and ``changed`` has not, else a 'number'."""
+    dropped = any(repr(w) in line and repr(w) not in changed for w in INTENSITY)
+    return "amount word" if dropped else "number"
 
 
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
@@ -99,11 +108,11 @@ def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str |
     names = list(kinds)
     changed = False
     for index, argument in enumerate(call.args):
-        if index < len(names) and _made_up(argument, names[index], kinds[names[index]], numbers):
+        if index < len(names) and _made_up(argument, names[index], kinds[names[index]], numbers, word):
             call.args[index] = _unstated_value(names[index], word)
             changed = True
     for keyword in call.keywords:
-        if keyword.arg in kinds and _made_up(keyword.value, keyword.arg, kinds[keyword.arg], numbers):
+        if keyword.arg in kinds and _made_up(keyword.value, keyword.arg, kinds[keyword.arg], numbers, word):
             keyword.value = _unstated_value(keyword.arg, word)
             changed = True
     if not changed:
@@ -156,8 +165,16 @@ def _none_by_default(keyword: ast.keyword, defaults: dict[str, object]) -> bool:
     return given_none and defaults.get(keyword.arg or "") is None
 
 
-def _made_up(node: ast.expr, name: str, kind: str, numbers: list[float]) -> bool:
+def _made_up(node: ast.expr, name: str, kind: str, numbers: list[float], word: str | None) -> bool:
+    """A distance or radius no number of the words gives, or an amount word where the words say none."""
+    if kind == "distance" and word is None and _amount_word(node):
+        return True
     return (kind == "distance" or name in RADII) and _literal_unstated(node, numbers)
+
+
+def _amount_word(node: ast.expr) -> bool:
+    """A vague amount word ('a bit', 'a lot', ...): copied from an example when the words say none."""
+    return isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value in INTENSITY
 
 
 def _unstated_value(name: str, word: str | None) -> ast.Constant:

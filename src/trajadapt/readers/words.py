@@ -283,11 +283,33 @@ STRONG_COMPARATIVE = re.compile(r"\b(?:way|loads|lots|heaps|tons|miles)\s+(?:mor
 """A comparative made strong by a word that is no amount elsewhere: "way slower", "loads closer"."""
 
 
+SMALL_AMOUNT = re.compile(
+    r"\b(?:a\s+(?:touch|tad|smidge|smidgen|hair|nudge|fraction|shade)|marginally|fractionally|minimally"
+    r"|barely|just\s+a\s+bit)\b",
+    re.I,
+)
+LARGE_AMOUNT = re.compile(
+    r"\b(?:substantially|considerably|greatly|hugely|massively|dramatically|drastically|markedly"
+    r"|a\s+(?:good|great)\s+deal|a\s+long\s+way|by\s+a\s+wide\s+margin)\b",
+    re.I,
+)
+"""Amount idioms the skills take no word for: "a touch", "a tad", "marginally" say 'slightly';
+"considerably", "a good deal", "a long way" say 'a lot'."""
+
+
 def intensity_word(words: str) -> str | None:
-    """The user's vague amount word, if any ('a lot', 'slightly', ...; "way slower" is 'a lot')."""
+    """The user's vague amount word, if any ('a lot', 'slightly', ...), as a word the skills take.
+
+    "way slower", "considerably", "a good deal" are 'a lot'; "a touch", "a tad", "marginally" are
+    'slightly'.
+    """
     lowered = words.lower()
     said = next((word for word in INTENSITY if re.search(rf"\b{re.escape(word)}\b", lowered)), None)
-    return said or ("a lot" if STRONG_COMPARATIVE.search(words) else None)
+    if said:
+        return said
+    if SMALL_AMOUNT.search(words):
+        return "slightly"
+    return "a lot" if STRONG_COMPARATIVE.search(words) or LARGE_AMOUNT.search(words) else None
 
 
 def is_stated(value: float, numbers: list[float]) -> bool:

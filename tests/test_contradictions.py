@@ -130,3 +130,33 @@ def test_feedback_is_read_beside_the_instruction() -> None:
     assert contradictions(["go up a bit", "and keep further from the kettle"], closer)[0].startswith(
         "the instruction asks to keep away from the kettle"
     )
+
+
+def test_a_distance_asked_that_did_not_change_is_flagged() -> None:
+    paced = effect_of(("scale_speed", (0.6,), {"near": at(KETTLE)}))  # the speed changed, the path did not
+    assert contradictions("come nearer to the kettle", paced) == [
+        "the instruction asks to get closer to the kettle, but the distance near it did not change (0.309 -> 0.309)"
+    ]
+    assert contradictions("come nearer to the kettle", effect_of(("move_closer", (at(KETTLE),), {}))) == []
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "Keep the start and end points fixed and pull the middle to the left",
+        "pull the middle to the left without moving the endpoints",
+        "pull the middle leftwards; the start and goal positions should stay where they are",
+    ],
+)
+def test_an_end_the_words_keep_where_it_is(words: str) -> None:
+    moved = effect_of(("shift", ("left", 0.1), {}))
+    assert any(flag.startswith("the words keep the goal where it is, but it moved 0.1 left") for flag in
+               contradictions(words, moved))  # fmt: skip
+    middle_only = effect_of(("shift_part", ("left", 0.1), {"part": "middle"}))
+    assert not any("keep the" in flag for flag in contradictions(words, middle_only))
+
+
+def test_keeping_on_is_no_end_kept() -> None:
+    longer = effect_of(("extend", (0.3,), {}))
+    assert contradictions("keep going past the goal for 0.3", longer) == []
+    assert contradictions("leave the end smooth and carry on 0.3 further", longer) == []

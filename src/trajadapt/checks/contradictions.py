@@ -8,11 +8,13 @@ ask, sentences that only say how the path is now left out) and split by the prod
   or "steer clear of" it counts as further here): the distance near it (the mean over the share of
   waypoints nearest it, as the speed near it is read) or the speed near it went the other way (read
   only where the path near it stayed: else the waypoints nearest it are others), or, where the
-  clause names no part of the path, neither changed at all;
+  clause names no part of the path, neither changed at all, or a distance asked did not change;
 - a clause that asks a pace of the whole path (no object, no part named): the mean speed went the
   other way;
 - a clause that asks the path to move one way (``asked_move``: no place word, no part, no negation,
-  no object to come closer to or keep away from): the path moved the other way on average.
+  no object to come closer to or keep away from): the path moved the other way on average;
+- an end the words keep where it is ("keeping the start and end positions the same", "without
+  moving the endpoints"): it moved.
 
 An object a clause only names ("pass through the middle of the banana and the glue") asks nothing
 that can be checked here, and is not flagged.
@@ -43,6 +45,27 @@ from trajadapt.readers.words import (
 
 AVOIDED = re.compile(r"\b(?:avoid\w*|clear of)\b", re.I)
 """Words that ask a clearance: the flags read them as asking away (the readers leave them to ``avoid``)."""
+_END = r"(start\w*|begin\w*|initial|end|ends|ending|endpoints?|goal|final|destination|both\s+ends)"
+_ENDS = (
+    rf"(?:the\s+)?{_END}(?:\s+(?:and|&)\s+(?:the\s+)?{_END})?(?:\s+(?:positions?|points?|poses?|waypoints?))?"
+)
+_STATE = (
+    r"(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place"
+    r"|where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are))"
+)
+KEPT_ENDS = (
+    re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
+    re.compile(
+        rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b",
+        re.I,
+    ),
+    re.compile(
+        rf"\b{_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
+        re.I,
+    ),
+)
+"""Words that keep an end of the path where it is: "keeping the start and end positions the same",
+"don't change the start and end positions", "the endpoints stay fixed"."""
 SPEED_NOISE = 1e-3
 """A share of the speed before: a smaller change of a mean speed is no change."""
 
@@ -62,7 +85,11 @@ def contradictions(asked: str | Sequence[str], effect: Effect, axes: Axes | None
     for obj in effect.objects:
         if obj.name in asks:
             flags += _object_flags(asks[obj.name], obj, noticeable)
-    return flags + _direction_flags(clauses, effect, noticeable, axes or Axes())
+    return (
+        flags
+        + _direction_flags(clauses, effect, noticeable, axes or Axes())
+        + _kept_end_flags(words, effect, noticeable)
+    )
 
 
 def _asks(words: str, clauses: Sequence[str], names: list[str]) -> dict[str, ObjectAsk]:
@@ -114,10 +141,13 @@ def _object_flags(ask: ObjectAsk, obj: ObjectEffect, noticeable: float) -> list[
     if not moved and abs(speed) <= speed_noise and not PART_OR_END.search(ask.clause):
         return [f"the instruction names the {obj.name}, but neither the distance to it {distances} "
                 "nor the speed near it changed"]  # fmt: skip
-    if ask.relation in ("closer", "away") and _against(ask.relation, distance, noticeable):
+    if ask.relation in ("closer", "away"):
         asked, went = ("get closer to", "grew") if ask.relation == "closer" else ("keep away from", "shrank")
         said = f"the instruction asks to {asked} the {obj.name}"
-        return [f"{said}, but the distance near it {went} {distances}"]
+        if _against(ask.relation, distance, noticeable):
+            return [f"{said}, but the distance near it {went} {distances}"]
+        if abs(distance) <= noticeable and not PART_OR_END.search(ask.clause):
+            return [f"{said}, but the distance near it did not change {distances}"]
     stayed = abs(distance) <= noticeable  # else the waypoints nearest it are others: speeds do not compare
     if ask.relation in ("slower", "faster") and stayed and _against(ask.relation, speed, speed_noise):
         speeds = f"({obj.speed_near_before:.3g} -> {obj.speed_near_after:.3g})"
@@ -136,3 +166,31 @@ def _direction_flags(clauses: Sequence[str], effect: Effect, noticeable: float, 
             went = effect.mean_shift_direction
             flags.append(f"the instruction says {direction}, but the path moved {went} on average")
     return flags
+
+
+def _kept_end_flags(words: str, effect: Effect, noticeable: float) -> list[str]:
+    """An end of the path the words keep where it is ("keep the start and end fixed"), moved."""
+    kept = {
+        _end_of(word)
+        for pattern in KEPT_ENDS
+        for found in pattern.finditer(words)
+        for word in found.groups()
+        if word
+    }
+    moves = {
+        "start": (effect.start_moved, effect.start_direction),
+        "goal": (effect.goal_moved, effect.goal_direction),
+    }
+    return [
+        f"the words keep the {end} where it is, but it moved {moves[end][0]:.3g} {moves[end][1]}"
+        for end in ("start", "goal")
+        if (end in kept or "both" in kept) and moves[end][0] > noticeable
+    ]
+
+
+def _end_of(word: str) -> str:
+    """Which end a word names: 'start', 'goal', or 'both' (endpoints, both ends)."""
+    word = word.lower()
+    if word.startswith(("start", "begin", "initial")):
+        return "start"
+    return "both" if word.startswith(("endpoint", "both")) or word == "ends" else "goal"

@@ -65,3 +65,33 @@ def test_a_part_the_words_never_name_gives_way_to_the_object(words: str, placed:
 def test_a_part_the_words_name_is_a_place_of_its_own() -> None:
     code = CODE.format(step="t = scale_speed(t, 1.6, part='end')")
     assert localize_speed(code, ["towards the end, go faster near the person"], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "placed"),
+    [
+        ("hurry through the middle section", "t = scale_speed(t, 1.4, near=detect_objects('goal'))",
+         "t = scale_speed(t, 1.4, part='middle')"),
+        ("crawl along for the second half", "t = set_speed(t, 0.2, near=detect_objects('start'), radius=0.3)",
+         "t = set_speed(t, 0.2, part='second half')"),
+        ("ease off the pace in stages", "t = scale_speed(t, 0.65, near=detect_objects('goal position'))",
+         "t = scale_speed(t, 0.65)"),
+    ],
+)  # fmt: skip
+def test_a_speed_placed_near_an_end_nobody_named_goes_where_the_words_say(
+    words: str, step: str, placed: str
+) -> None:
+    code, notes = localize_speed(CODE.format(step=step), [words], ["lamp"])
+    assert code == CODE.format(step=placed) and "the words never name the" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        ("ease off as you arrive", "t = scale_speed(t, 0.65, near=detect_objects('goal'))"),
+        ("brisker right at the beginning", "t = scale_speed(t, 1.4, near=detect_objects('start'))"),
+        ("slower close to the end point", "t = scale_speed(t, 0.65, near=detect_objects('end point'))"),
+    ],
+)  # fmt: skip
+def test_a_speed_placed_near_an_end_the_words_name_stays(words: str, step: str) -> None:
+    assert localize_speed(CODE.format(step=step), [words], ["lamp"]) == (CODE.format(step=step), [])

@@ -8,19 +8,31 @@ exactly one speed step with no place of its own (no ``near=``, ``radius=`` or ``
 step gets ``near=detect_objects('<that object>')``, and the clause's reach ("within 0.1 of the
 screw") as ``radius=``. A ``part=`` the words never ask for (no word names a part or an end of
 the path: "within 0.1 of the screw, slow down" came back as ``part='second half'``) is no place of
-its own either: it gives way to the object. A review note says so. Measured on stored answers in
-docs/benchmarks.md.
+its own either: it gives way to the object. A speed step placed near an end of the path the words
+never name (``near=detect_objects('goal')`` for "speed up in the middle of the trajectory": an
+example's place, not the user's) is placed where the words say: the part they name, else the whole
+path. A review note says so. Measured on stored answers in docs/benchmarks.md.
 """
 
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, in_place_of
+from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, detected_name, in_place_of
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN
-from trajadapt.readers.words import PART_OR_END, PLACE_WORDS, SPEED_WORDS, longest_names, names_in
+from trajadapt.readers.words import PART_OR_END, PLACE_WORDS, SPEED_WORDS, longest_names, names_in, part_named
+from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
+
+END_NAMES = {"goal": {n.casefold() for n in GOAL_NAMES}, "start": {n.casefold() for n in START_NAMES}}
+"""The names ``detect_objects`` reads as the path's own ends."""
+ENDS_SAID = {
+    "goal": re.compile(r"\b(?:goal|end\w*|final\w*|finish\w*|arriv\w*|destination|target|last)\b", re.I),
+    "start": re.compile(r"\b(?:start\w*|begin\w*|initial\w*|depart\w*|first|origin)\b", re.I),
+}
+"""Words that name each end of the path: where the words say none, a speed placed near it is a guess."""
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
@@ -39,9 +51,52 @@ def _scoped_clause(words: str, names: list[str]) -> tuple[str, str] | None:
 
 
 def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
-    """``code`` with its one unplaced speed step placed near the object the words name, and a note."""
+    """``code`` with its speed steps placed where the words place them (see the module), and a note each."""
     words = " ".join(asked)
-    scoped = _scoped_clause(words, list(names))
+    code, notes = _unsaid_ends_as_places(code, words)
+    placed, found = _placed_near_the_named_object(code, words, list(names))
+    return placed, notes + found
+
+
+def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
+    """Each speed step placed near an end of the path the words never name, placed where they say.
+
+    ``scale_speed(t, 1.4, near=detect_objects('goal'))`` for "speed up in the middle": the part the
+    words name (``part='middle'``), else the whole path.
+    """
+    lines, notes = code.splitlines(), []
+    for index, line in enumerate(lines):
+        found = assigned_call(line)
+        if found is None or found[2] not in PLACED_SPEED_STEPS:
+            continue
+        tree, call, _ = found
+        end = next((_end_named(k.value) for k in call.keywords if k.arg == "near"), None)
+        if end is None or ENDS_SAID[end].search(words):
+            continue
+        part = part_named(words)
+        call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
+        if part:
+            call.keywords.append(ast.keyword("part", ast.Constant(part)))
+        before, after = line.strip(), ast.unparse(tree)
+        lines[index] = in_place_of(line, after)
+        where = f"in the {part}" if part else "everywhere"
+        notes.append(
+            f"`{before}` -> `{after}`: the words never name the {end}; they change the speed {where}"
+        )
+    return "\n".join(lines), notes
+
+
+def _end_named(point: ast.expr) -> str | None:
+    """'goal' or 'start' where ``point`` is ``detect_objects`` of the path's own end, else None."""
+    name = detected_name(point)
+    if name is None:
+        return None
+    return next((end for end, spellings in END_NAMES.items() if name.casefold() in spellings), None)
+
+
+def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:
+    """``code`` with its one unplaced speed step placed near the object the words name, and a note."""
+    scoped = _scoped_clause(words, names)
     if scoped is None:
         return code, []
     clause, target = scoped

@@ -42,7 +42,6 @@ from trajadapt.code_parse import (
     parse_code,
     step_on_object,
 )
-from trajadapt.model.geometry import PART_WORDS
 from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
@@ -50,9 +49,8 @@ from trajadapt.readers.words import (
     PART_OR_END,
     SLOWER,
     intensity_word,
-    longest_names,
+    part_named,
     said_directions,
-    whole_words,
 )
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
@@ -121,7 +119,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
     if faster == slower or paces:
         return None, ""
-    part = _shift_part(lines[index]) or _part_named(words)
+    part = _shift_part(lines[index]) or part_named(words)
     where = f", part={part!r}" if part else ""
     step = f"t = scale_speed(t, {speed_factor(words, faster=faster)}{where})"
     return step, f"it asks for a {'faster' if faster else 'slower'} pace"
@@ -160,12 +158,3 @@ def _shift_part(line: str) -> str | None:
     if part is None and found[2] == "shift_part" and len(found[1].args) > 3:
         part = found[1].args[3]
     return str(part.value) if isinstance(part, ast.Constant) and isinstance(part.value, str) else None
-
-
-def _part_named(words: str) -> str | None:
-    """The one part of the path the words name ('middle', 'start', 'end', 'first half', ...)."""
-    text = whole_words(words)
-    longest = longest_names(
-        [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
-    )
-    return longest[0] if len(longest) == 1 else None

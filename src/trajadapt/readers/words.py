@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS, PART_WORDS
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 
 NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
@@ -322,3 +322,11 @@ def amount_size(words: str) -> str:
     strength = AMOUNT_WORDS.get(intensity_word(words) or "", AMOUNT_WORDS["default"])
     plain = AMOUNT_WORDS["default"]
     return "a bit" if strength < plain else "a lot" if strength > plain else ""
+
+
+def part_named(words: str) -> str | None:
+    """The one part of the path the words name ('middle', 'start', 'end', 'first half', ...)."""
+    text = whole_words(words)
+    named = [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
+    longest = longest_names(named)
+    return longest[0] if len(longest) == 1 else None

@@ -63,7 +63,7 @@ def test_each_clause_is_flagged_against_its_own_object() -> None:
     )
     assert any(flag.startswith("the instruction asks to keep away from the kettle") for flag in flags)
     slower_at_vase = effect_of(("scale_speed", (0.6,), {"near": at(VASE), "radius": 0.2}))
-    flags = contradictions("Keep clear of the kettle and speed up near the vase", slower_at_vase)
+    flags = contradictions("Move further from the kettle and speed up near the vase", slower_at_vase)
     assert any(flag.startswith("the instruction names the kettle, but neither") for flag in flags)
     assert any(flag.startswith("the instruction asks for faster near the vase") for flag in flags)
 
@@ -160,3 +160,22 @@ def test_keeping_on_is_no_end_kept() -> None:
     longer = effect_of(("extend", (0.3,), {}))
     assert contradictions("keep going past the goal for 0.3", longer) == []
     assert contradictions("leave the end smooth and carry on 0.3 further", longer) == []
+
+
+def test_a_negated_pace_or_a_limit_asks_no_change() -> None:
+    shifted_faster = effect_of(("scale_speed", (1.3,), {}))
+    assert contradictions("go left, but don't slow down", shifted_faster) == []
+    assert contradictions("never go slower than 0.5", shifted_faster) == []
+    assert contradictions("ease off around corners", shifted_faster) == []  # a place, not the whole path
+
+
+def test_a_clearance_that_already_holds_asks_no_change() -> None:
+    untouched = effect_of(("scale_speed", (1.0,), {}))
+    assert contradictions("keep at least 0.1 from the kettle", untouched) == []
+    assert contradictions("avoid the vase", untouched) == []
+
+
+def test_feedback_that_moves_a_kept_end_takes_the_keeping_back() -> None:
+    moved = effect_of(("shift", ("left", 0.1), {}))
+    assert contradictions(["keep the endpoints fixed", "now move the goal left"], moved) == []
+    assert contradictions("don't change the end speed", moved) == []

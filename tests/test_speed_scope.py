@@ -95,3 +95,9 @@ def test_a_speed_placed_near_an_end_nobody_named_goes_where_the_words_say(
 )  # fmt: skip
 def test_a_speed_placed_near_an_end_the_words_name_stays(words: str, step: str) -> None:
     assert localize_speed(CODE.format(step=step), [words], ["lamp"]) == (CODE.format(step=step), [])
+
+
+def test_an_end_given_in_order_and_the_part_of_the_pace_clause_only() -> None:
+    step = "t = scale_speed(t, 1.4, detect_objects('goal'), 0.2)"
+    code, _ = localize_speed(CODE.format(step=step), ["shift the middle left and go faster"], ["lamp"])
+    assert code == CODE.format(step="t = scale_speed(t, 1.4)")  # "middle" belongs to the shift's clause

@@ -208,3 +208,15 @@ def test_the_amount_is_the_one_a_clause_of_that_pace_says():
     code = "t = get_trajectory()\nt = scale_speed(t, 1.3)\nmodified_trajectory = t"
     read, _ = replace_unstated_amounts(code, ["Drive faster by the lamp; it must be much faster there."])
     assert "scale_speed(t, 1.6)" in read
+
+
+@pytest.mark.parametrize(
+    "words", ["it barely clears the box; move away", "dry it with a hair dryer", "a tadpole pond"]
+)
+def test_words_that_only_look_like_amount_idioms(words: str) -> None:
+    assert intensity_word(words) is None
+
+
+def test_a_double_quoted_amount_word_is_named_in_the_note() -> None:
+    code, notes = replace_unstated_amounts(START + 't = shift(t, "right", "a lot")' + END, ["drift right"])
+    assert steps(code) == ["t = shift(t, 'right')"] and "no such amount word" in notes[0]

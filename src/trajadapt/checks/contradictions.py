@@ -35,8 +35,12 @@ from trajadapt.readers.object_words import ObjectAsk, object_asks
 from trajadapt.readers.request_words import request_words
 from trajadapt.readers.words import (
     FASTER,
+    GOAL,
+    MINIMUM_DISTANCE,
     PART_OR_END,
+    PLACE_WORDS,
     SLOWER,
+    START,
     asks_distance,
     asks_pace,
     longest_names,
@@ -56,7 +60,8 @@ _STATE = (
 KEPT_ENDS = (
     re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
     re.compile(
-        rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b",
+        rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b"
+        r"(?!\s+(?:speed|pace|velocity|height|altitude))",
         re.I,
     ),
     re.compile(
@@ -66,6 +71,9 @@ KEPT_ENDS = (
 )
 """Words that keep an end of the path where it is: "keeping the start and end positions the same",
 "don't change the start and end positions", "the endpoints stay fixed"."""
+NOT_ASKED = re.compile(r"\b(?:not|never|no|don't|doesn't|without)\b|n't\b|\bthan\s+(?:\d|\.\d)", re.I)
+"""A negation or a limit: "don't slow down", "never faster than 0.3" ask no change of pace (the plain
+form leaves them as said)."""
 SPEED_NOISE = 1e-3
 """A share of the speed before: a smaller change of a mean speed is no change."""
 
@@ -77,7 +85,8 @@ def contradictions(asked: str | Sequence[str], effect: Effect, axes: Axes | None
     """
     names = [obj.name for obj in effect.objects]
     said = [asked] if isinstance(asked, str) else list(asked)
-    words = ". ".join(request_words(text, names) for text in said)
+    requests = [request_words(text, names) for text in said]
+    words = ". ".join(requests)
     clauses = split_clauses(words, names)
     asks = _asks(words, clauses, names)
     noticeable = NOTICEABLE * effect.size
@@ -88,7 +97,7 @@ def contradictions(asked: str | Sequence[str], effect: Effect, axes: Axes | None
     return (
         flags
         + _direction_flags(clauses, effect, noticeable, axes or Axes())
-        + _kept_end_flags(words, effect, noticeable)
+        + _kept_end_flags(requests, effect, noticeable)
     )
 
 
@@ -110,7 +119,7 @@ def _whole_path_pace_flags(clauses: Sequence[str], names: list[str], effect: Eff
         if asks_pace(clause)
         and bool(SLOWER.search(clause)) != bool(FASTER.search(clause))
         and not names_in(clause, names)
-        and not PART_OR_END.search(clause)
+        and not (PART_OR_END.search(clause) or PLACE_WORDS.search(clause) or NOT_ASKED.search(clause))
     }
     if len(wanted) != 1:
         return []
@@ -131,14 +140,16 @@ def _against(wanted: str, change: float, noise: float) -> bool:
 
 def _object_flags(ask: ObjectAsk, obj: ObjectEffect, noticeable: float) -> list[str]:
     """What the effect on one object contradicts in what a clause asks of it."""
-    if ask.relation == "side":
+    if ask.relation == "side" or (ask.relation in ("slower", "faster") and NOT_ASKED.search(ask.clause)):
         return []
     distance = obj.near_after - obj.near_before
     speed = obj.speed_near_after - obj.speed_near_before
     speed_noise = SPEED_NOISE * max(obj.speed_near_before, 1e-9)
     distances = f"({obj.near_before:.3g} -> {obj.near_after:.3g})"
     moved = max(abs(distance), abs(obj.closest_after - obj.closest_before)) > noticeable
-    if not moved and abs(speed) <= speed_noise and not PART_OR_END.search(ask.clause):
+    may_hold = bool(MINIMUM_DISTANCE.search(ask.clause) or AVOIDED.search(ask.clause))  # already clear?
+    checkable = not PART_OR_END.search(ask.clause) and not may_hold
+    if checkable and not moved and abs(speed) <= speed_noise:
         return [f"the instruction names the {obj.name}, but neither the distance to it {distances} "
                 "nor the speed near it changed"]  # fmt: skip
     if ask.relation in ("closer", "away"):
@@ -146,7 +157,7 @@ def _object_flags(ask: ObjectAsk, obj: ObjectEffect, noticeable: float) -> list[
         said = f"the instruction asks to {asked} the {obj.name}"
         if _against(ask.relation, distance, noticeable):
             return [f"{said}, but the distance near it {went} {distances}"]
-        if abs(distance) <= noticeable and not PART_OR_END.search(ask.clause):
+        if checkable and abs(distance) <= noticeable:  # near it, where the distance is asked
             return [f"{said}, but the distance near it did not change {distances}"]
     stayed = abs(distance) <= noticeable  # else the waypoints nearest it are others: speeds do not compare
     if ask.relation in ("slower", "faster") and stayed and _against(ask.relation, speed, speed_noise):
@@ -158,9 +169,9 @@ def _object_flags(ask: ObjectAsk, obj: ObjectEffect, noticeable: float) -> list[
 
 def _direction_flags(clauses: Sequence[str], effect: Effect, noticeable: float, axes: Axes) -> list[str]:
     """A direction a clause asks the whole path to move in, while it moved the other way on average."""
-    asked = {asked_move(clause) for clause in clauses if not asks_distance(clause)} - {None}
+    asked = {move for clause in clauses if not asks_distance(clause) and (move := asked_move(clause))}
     flags = []
-    for direction in sorted(d for d in asked if d is not None and OPPOSITE_DIRECTIONS[d] not in asked):
+    for direction in sorted(d for d in asked if OPPOSITE_DIRECTIONS[d] not in asked):
         along = float(np.asarray(effect.mean_shift) @ axes.vector(direction))
         if along < -noticeable:
             went = effect.mean_shift_direction
@@ -168,15 +179,17 @@ def _direction_flags(clauses: Sequence[str], effect: Effect, noticeable: float, 
     return flags
 
 
-def _kept_end_flags(words: str, effect: Effect, noticeable: float) -> list[str]:
-    """An end of the path the words keep where it is ("keep the start and end fixed"), moved."""
-    kept = {
-        _end_of(word)
-        for pattern in KEPT_ENDS
-        for found in pattern.finditer(words)
-        for word in found.groups()
-        if word
-    }
+def _kept_end_flags(requests: Sequence[str], effect: Effect, noticeable: float) -> list[str]:
+    """An end of the path the words keep where it is ("keep the start and end fixed"), moved.
+
+    A later request that names the end ("now move the goal left") takes the keeping back.
+    """
+    kept: set[str] = set()
+    for request in requests:
+        kept -= {end for end, named in (("start", START), ("goal", GOAL)) if named.search(request)}
+        for pattern in KEPT_ENDS:
+            for found in pattern.finditer(request):
+                kept |= {end for word in found.groups() if word for end in _ends_of(word)}
     moves = {
         "start": (effect.start_moved, effect.start_direction),
         "goal": (effect.goal_moved, effect.goal_direction),
@@ -184,13 +197,13 @@ def _kept_end_flags(words: str, effect: Effect, noticeable: float) -> list[str]:
     return [
         f"the words keep the {end} where it is, but it moved {moves[end][0]:.3g} {moves[end][1]}"
         for end in ("start", "goal")
-        if (end in kept or "both" in kept) and moves[end][0] > noticeable
+        if end in kept and moves[end][0] > noticeable
     ]
 
 
-def _end_of(word: str) -> str:
-    """Which end a word names: 'start', 'goal', or 'both' (endpoints, both ends)."""
+def _ends_of(word: str) -> tuple[str, ...]:
+    """Which ends a word names: ('start',), ('goal',), or both (endpoints, both ends)."""
     word = word.lower()
     if word.startswith(("start", "begin", "initial")):
-        return "start"
-    return "both" if word.startswith(("endpoint", "both")) or word == "ends" else "goal"
+        return ("start",)
+    return ("start", "goal") if word.startswith(("endpoint", "both")) or word == "ends" else ("goal",)

@@ -2,10 +2,10 @@
 
 ``measure_effect`` compares the original and the adapted trajectory: start and goal moved (how far,
 which way in the stated axis convention), the largest and mean displacement and where along the
-path, the closest distance to each object and the speed near it before and after, mean speed, path
-length, waypoint count and time to traverse; where the result was projected onto constraints, which
-constraint moved which waypoints. What the effect contradicts in the user's words is read in
-``checks.contradictions``.
+path, the closest distance to each object, the mean distance and the speed near it (its nearest
+quarter of waypoints) before and after, mean speed, path length, waypoint count and time to
+traverse; where the result was projected onto constraints, which constraint moved which waypoints.
+What the effect contradicts in the user's words is read in ``checks.contradictions``.
 """
 
 from __future__ import annotations

@@ -20,13 +20,22 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, detected_name, in_place_of
+from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, in_place_of, placed_near
+from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN
-from trajadapt.readers.words import PART_OR_END, PLACE_WORDS, SPEED_WORDS, longest_names, names_in, part_named
+from trajadapt.readers.words import (
+    PART_OR_END,
+    PLACE_WORDS,
+    SPEED_WORDS,
+    asks_pace,
+    longest_names,
+    names_in,
+    part_named,
+)
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
-END_NAMES = {"goal": {n.casefold() for n in GOAL_NAMES}, "start": {n.casefold() for n in START_NAMES}}
+END_NAMES = {"goal": {name_key(n) for n in GOAL_NAMES}, "start": {name_key(n) for n in START_NAMES}}
 """The names ``detect_objects`` reads as the path's own ends."""
 ENDS_SAID = {
     "goal": re.compile(r"\b(?:goal|end\w*|final\w*|finish\w*|arriv\w*|destination|target|last)\b", re.I),
@@ -70,10 +79,11 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         if found is None or found[2] not in PLACED_SPEED_STEPS:
             continue
         tree, call, _ = found
-        end = next((_end_named(k.value) for k in call.keywords if k.arg == "near"), None)
+        end = _end_named(placed_near(call))
         if end is None or ENDS_SAID[end].search(words):
             continue
-        part = part_named(words)
+        part = part_named(" ".join(c for c in split_clauses(words) if asks_pace(c)))
+        call.args = call.args[:2]  # a place given in order (near, radius, part) goes with the keywords
         call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
         if part:
             call.keywords.append(ast.keyword("part", ast.Constant(part)))
@@ -86,12 +96,11 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
     return "\n".join(lines), notes
 
 
-def _end_named(point: ast.expr) -> str | None:
-    """'goal' or 'start' where ``point`` is ``detect_objects`` of the path's own end, else None."""
-    name = detected_name(point)
+def _end_named(name: str | None) -> str | None:
+    """'goal' or 'start' where ``name`` is how ``detect_objects`` calls the path's own end, else None."""
     if name is None:
         return None
-    return next((end for end, spellings in END_NAMES.items() if name.casefold() in spellings), None)
+    return next((end for end, spellings in END_NAMES.items() if name_key(name) in spellings), None)
 
 
 def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:

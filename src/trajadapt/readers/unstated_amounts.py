@@ -7,8 +7,8 @@ where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``m
 ``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
 converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
 or removed so that the skill's calibrated default applies; so is an amount word passed as a distance
-where the words say none at all (``extend(t, 'a bit', 'back')`` for "move back some distance":
-copied from an example, as no argument should be), and a made-up ``radius`` of a speed
+where the words say none at all (``extend(t, 'a bit', 'back')`` for "move back some distance": an
+example's word, and no argument should come from an example), and a made-up ``radius`` of a speed
 change (``set_speed(t, 5, near=box, radius=1.0)`` on a 100-unit map reached no waypoint). A speed
 factor the user never gave (``scale_speed(t, 0.65)`` for "a lot slower") becomes the calibrated
 factor of the prompt's phrase table for the words of the speed's own clause ('a bit', none, 'a
@@ -66,7 +66,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
 
 def _what(line: str, changed: str) -> str:
     """What was made up in ``line``: an amount 'word' it had and ``changed`` has not, else a 'number'."""
-    dropped = any(repr(w) in line and repr(w) not in changed for w in INTENSITY)
+    quoted = [quote + w + quote for w in INTENSITY for quote in ("'", '"')]
+    dropped = any(q in line and q.replace('"', "'") not in changed for q in quoted)
     return "amount word" if dropped else "number"
 
 

@@ -284,8 +284,8 @@ STRONG_COMPARATIVE = re.compile(r"\b(?:way|loads|lots|heaps|tons|miles)\s+(?:mor
 
 
 SMALL_AMOUNT = re.compile(
-    r"\b(?:a\s+(?:touch|tad|smidge|smidgen|hair|nudge|fraction|shade)|marginally|fractionally|minimally"
-    r"|barely|just\s+a\s+bit)\b",
+    r"\b(?:a\s+(?:touch|tad|smidge|smidgen|nudge|shade)\b|a\s+hair\b(?!\s+dryer)|marginally|fractionally"
+    r"|minimally|subtl\w*)",
     re.I,
 )
 LARGE_AMOUNT = re.compile(
@@ -293,7 +293,7 @@ LARGE_AMOUNT = re.compile(
     r"|a\s+(?:good|great)\s+deal|a\s+long\s+way|by\s+a\s+wide\s+margin)\b",
     re.I,
 )
-"""Amount idioms the skills take no word for: "a touch", "a tad", "marginally" say 'slightly';
+"""Amount idioms the skills take no word for: "a touch", "a tad", "marginally", "subtly" say 'slightly';
 "considerably", "a good deal", "a long way" say 'a lot'."""
 
 

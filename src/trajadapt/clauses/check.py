@@ -23,7 +23,8 @@ from trajadapt.readers.words import asked_kinds, asks_distance, names_in, said_d
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
     """What the step's measured effect contradicts in the clause's words; [] when nothing."""
-    findings = contradictions(clause, effect, axes)
+    flags = contradictions(clause, effect, axes)
+    findings = list(flags)
     kinds = asked_kinds(clause)
     pace, place = "pace" in kinds, "place" in kinds
     moved = effect.largest_displacement > NOTICEABLE * effect.size
@@ -38,13 +39,16 @@ def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:
         findings.append(
             "the step changed only the speed, but these words ask where the path goes, not how fast"
         )
-    return findings + _not_moved_as_said(clause, effect, axes)
+    return findings + _not_moved_as_said(clause, effect, axes, _of_sign(flags))
 
 
-def _not_moved_as_said(clause: str, effect: Effect, axes: Axes) -> list[str]:
-    """One direction said, no object to go closer to or away from, and nothing moved that way."""
+def _not_moved_as_said(clause: str, effect: Effect, axes: Axes, moved_the_other_way: bool) -> list[str]:
+    """One direction said, no object to go closer to or away from, and nothing moved that way.
+
+    ``moved_the_other_way``: the effect report already flags a move against the words.
+    """
     said = said_directions(clause)
-    if len(said) != 1 or asks_distance(clause) or findings_of_sign(clause, effect, axes):
+    if len(said) != 1 or asks_distance(clause) or moved_the_other_way:
         return []
     (direction,) = said
     noticeable = NOTICEABLE * effect.size
@@ -56,6 +60,6 @@ def _not_moved_as_said(clause: str, effect: Effect, axes: Axes) -> list[str]:
     return [f"the words say {direction}, but the step moved the path {along:.3g} {direction} on average"]
 
 
-def findings_of_sign(clause: str, effect: Effect, axes: Axes) -> bool:
-    """Whether the effect report already flags a move the other way (``contradictions``)."""
-    return any("says" in flag for flag in contradictions(clause, effect, axes))
+def _of_sign(flags: list[str]) -> bool:
+    """Whether the effect report's flags (``contradictions``) hold a move the other way."""
+    return any("says" in flag for flag in flags)

@@ -49,26 +49,19 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if _made_up_height(line, numbers):
             notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
             continue
-        changed = _replace_in_line(line, numbers, word)
+        replaced = _replace_in_line(line, numbers, word)
+        changed, what = replaced if replaced is not None else (None, "number")
         used = repr(word) if word else "the default amount"
         if changed is None and (calibrated := _calibrate_factor(line, numbers, words)):
             changed, stated = calibrated
             used = "the factor the words state" if stated else used
         if changed is not None and changed != line.strip():
             notes.append(
-                f"`{line.strip()}` -> `{changed}`: the instruction gives no such {_what(line, changed)}, "
-                f"so {used} is used"
+                f"`{line.strip()}` -> `{changed}`: the instruction gives no such {what}, so {used} is used"
             )
             line = in_place_of(line, changed)
         lines.append(line)
     return "\n".join(lines), notes
-
-
-def _what(line: str, changed: str) -> str:
-    """What was made up in ``line``: an amount 'word' it had and ``changed`` has not, else a 'number'."""
-    quoted = [quote + w + quote for w in INTENSITY for quote in ("'", '"')]
-    dropped = any(q in line and q.replace('"', "'") not in changed for q in quoted)
-    return "amount word" if dropped else "number"
 
 
 def _skill_call(line: str) -> tuple[ast.Module, ast.Call, str] | None:
@@ -100,26 +93,27 @@ def _literal_unstated(node: ast.expr, numbers: list[float]) -> bool:
     )
 
 
-def _replace_in_line(line: str, numbers: list[float], word: str | None) -> str | None:
+def _replace_in_line(line: str, numbers: list[float], word: str | None) -> tuple[str, str] | None:
+    """The line with its made-up values replaced, and what was made up: an 'amount word' or a 'number'."""
     found = _skill_call(line)
     if found is None:
         return None
     tree, call, name = found
     kinds = {p.name: kind for p, kind in skill_parameters(BY_NAME[name])}
     names = list(kinds)
-    changed = False
+    replaced: list[ast.expr] = []
     for index, argument in enumerate(call.args):
         if index < len(names) and _made_up(argument, names[index], kinds[names[index]], numbers, word):
+            replaced.append(argument)
             call.args[index] = _unstated_value(names[index], word)
-            changed = True
     for keyword in call.keywords:
         if keyword.arg in kinds and _made_up(keyword.value, keyword.arg, kinds[keyword.arg], numbers, word):
+            replaced.append(keyword.value)
             keyword.value = _unstated_value(keyword.arg, word)
-            changed = True
-    if not changed:
+    if not replaced:
         return None
     _drop_trailing_defaults(call, BY_NAME[name])
-    return ast.unparse(tree)
+    return ast.unparse(tree), "amount word" if any(_amount_word(node) for node in replaced) else "number"
 
 
 def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str, bool] | None:

@@ -43,7 +43,7 @@ from trajadapt.sandbox.protocol import (
     worker_answer_json,
 )
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
-from trajadapt.sandbox.rewrite import assign_discarded_results, measure_from_original
+from trajadapt.sandbox.rewrite import assign_discarded_results, measure_from_original, passes_last
 from trajadapt.sandbox.template import Template, TemplateGone, ended, send_job
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
 
@@ -188,6 +188,7 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
         api.update(dict.fromkeys(DETECT_ALIASES, api["detect_objects"]))
         notes += assign_discarded_results(tree, SKILL_NAMES)
         notes += measure_from_original(tree)
+        notes += passes_last(tree)
     namespace = _namespace(api, modules, output) if python_layers else _unrestricted_namespace(api, output)
     try:
         exec(compile(tree, GENERATED_FILENAME, "exec"), namespace)  # noqa: S102

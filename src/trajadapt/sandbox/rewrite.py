@@ -10,6 +10,11 @@ table"), but run one after the other the second undoes part of the first: closer
 pulls the path down again; "the path up a little, the goal down a little" left the goal where it
 was. ``measure_from_original`` runs such steps after the shifts, measured from the original path:
 distances promised from it and reached across the shift, an end moved beyond where it was.
+
+"Fly over the cycle, then finish 0.3 further right" came back as ``pass_over`` then ``shift_goal``:
+the goal's move dragged the pass off the cycle. A step that puts the path through a point keeps its
+promise only when nothing moves the path after it: ``passes_last`` runs such steps after the moves
+beside them.
 """
 
 from __future__ import annotations
@@ -74,7 +79,7 @@ def measure_from_original(tree: ast.Module) -> list[str]:
         One note per step changed.
     """
     notes: list[str] = []
-    for start, end in _step_runs(tree.body):
+    for start, end in _step_runs(tree.body, SHIFTS | MEASURED):
         run = tree.body[start:end]
         names = [_skill(statement) for statement in run]
         if not (SHIFTS & set(names) and MEASURED & set(names)):
@@ -95,8 +100,46 @@ def measure_from_original(tree: ast.Module) -> list[str]:
     return notes
 
 
-def _step_runs(body: list[ast.stmt]) -> list[tuple[int, int]]:
-    """[start, end) of each run of shift / measured steps on one variable.
+PASSES = frozenset({"pass_through", "pass_over"})
+"""Steps that put the path through a point: a move after them takes the path off it."""
+MOVES = frozenset(
+    {"shift", "shift_goal", "shift_start", "shift_part", "lift_middle", "reach", "move_closer", "move_away"}
+)
+"""Steps that move the path (or an end) by an amount or to an end point, and so may run before a pass."""
+SPEEDS = frozenset({"scale_speed", "set_speed", "speed_profile"})
+"""Steps that change the speed alone: they may sit among the others in any order."""
+
+
+def passes_last(tree: ast.Module) -> list[str]:
+    """Run the steps that pass through a point after the moves that follow them (see the module).
+
+    Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable made of
+    ``PASSES``, ``MOVES`` and ``SPEEDS`` steps only, where a move follows a pass: the passes go to
+    the end of the run, in their order. Anything else is left as written.
+
+    Returns:
+        One note per step moved.
+    """
+    notes: list[str] = []
+    for start, end in _step_runs(tree.body, PASSES | MOVES | SPEEDS):
+        run = tree.body[start:end]
+        names = [_skill(statement) for statement in run]
+        first_pass = next((i for i, name in enumerate(names) if name in PASSES), None)
+        if first_pass is None or not any(name in MOVES for name in names[first_pass:]):
+            continue
+        passes = [s for s, name in zip(run, names, strict=True) if name in PASSES]
+        notes += [
+            f"line {statement.lineno}: {_skill(statement)}() runs after the moves written after it, so that "
+            "the path still passes the point"
+            for statement in passes
+        ]
+        tree.body[start:end] = [s for s in run if s not in passes] + passes
+    ast.fix_missing_locations(tree)
+    return notes
+
+
+def _step_runs(body: list[ast.stmt], skills: frozenset[str]) -> list[tuple[int, int]]:
+    """[start, end) of each run of ``skills`` steps on one variable.
 
     Lines that neither assign nor read the variable (``table = detect_objects('table')``) may sit
     between the steps; a run starts and ends with a step.
@@ -104,14 +147,16 @@ def _step_runs(body: list[ast.stmt]) -> list[tuple[int, int]]:
     runs: list[tuple[int, int]] = []
     index = 0
     while index < len(body):
-        variable = _step_variable(body[index])
+        variable = _step_variable(body[index], skills)
         if variable is None:
             index += 1
             continue
         end = last = index + 1
-        while end < len(body) and (_step_variable(body[end]) == variable or _apart(body[end], variable)):
+        while end < len(body) and (
+            _step_variable(body[end], skills) == variable or _apart(body[end], variable)
+        ):
             end += 1
-            if _step_variable(body[end - 1]) == variable:
+            if _step_variable(body[end - 1], skills) == variable:
                 last = end
         runs.append((index, last))
         index = last
@@ -127,9 +172,9 @@ def _apart(statement: ast.stmt, variable: str) -> bool:
     )
 
 
-def _step_variable(statement: ast.stmt) -> str | None:
-    """``t`` for ``t = skill(t, ...)`` with skill a shift or a measured step, else None."""
-    if _skill(statement) not in SHIFTS | MEASURED:
+def _step_variable(statement: ast.stmt, skills: frozenset[str]) -> str | None:
+    """``t`` for ``t = skill(t, ...)`` with skill one of ``skills``, else None."""
+    if _skill(statement) not in skills:
         return None
     target = statement.targets[0]  # type: ignore[attr-defined]
     first = statement.value.args[0]  # type: ignore[attr-defined]

@@ -8,7 +8,8 @@ For each object that one clause asks to come closer to or keep further from
 one relation of it), when no line of the code but a speed step names the object (a speed step's
 ``near=`` says where the speed changes, not where the path goes), the reader adds
 ``move_closer`` / ``move_away`` with the clause's vague word as the last step (``avoid`` with the
-clearance when the clause states a least distance: "stay at least 0.2 from it"); a clause that places
+clearance when the clause states a least distance: "stay at least 0.2 from it"; ``pass_through``
+when the clause asks to pass close by it: "swing by the lamp", "fly close past the box"); a clause that places
 its request at a part or an end of the path ("after reaching the goal, approach the lamp") asks
 something else and is left to the model. A step that names
 the object in any other way (``avoid``, ``reach``, ``pass_through``, ``circle_around``, a
@@ -27,7 +28,7 @@ from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.words import MINIMUM_DISTANCE, PART_OR_END, intensity_word
 from trajadapt.skills import SKILL_NAMES
 
-STEP_OF = {"closer": "move_closer", "away": "move_away"}
+STEP_OF = {"closer": "move_closer", "away": "move_away", "by": "pass_through"}
 """The step that answers each relation this reader adds."""
 
 
@@ -46,7 +47,7 @@ def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -
         if any(_names(line, ask.name) for line in lines):
             continue
         word, least = intensity_word(ask.clause), MINIMUM_DISTANCE.search(ask.clause)
-        amount = f", {word!r}" if word else ""
+        amount = f", {word!r}" if word and ask.relation != "by" else ""
         step = f"{variable} = {STEP_OF[ask.relation]}({variable}, detect_objects({ask.name!r}){amount})"
         if least is not None and ask.relation == "away":  # "at least 0.2 from it": a clearance to keep
             step = f"{variable} = avoid({variable}, detect_objects({ask.name!r}), {least.group(1)})"

@@ -17,7 +17,9 @@ the scene's objects asks one thing of it:
 - closer ("closer", "nearer", "a smaller distance", "approach") or away ("further", "away", "a
   greater distance") -> a step the other way (``move_away`` for closer, ``move_closer`` for away),
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
-  ``move_closer`` / ``move_away`` with the clause's vague word.
+  ``move_closer`` / ``move_away`` with the clause's vague word;
+- to pass close by it ("swing by X", "fly close past X", "come close to X") -> the one distance step
+  on it becomes ``pass_through`` of it.
 
 A ``keep_side`` of an object whose clause asks no side but a distance or a pace ("it should stay
 nearer to the chair than it does now" answered with ``keep_side(t, 'front', chair)``) does another
@@ -359,6 +361,8 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
         return [speed] if rest is None else [rest, speed]
     if ask.relation == "side":
         return [f"t = keep_side(t, {ask.side!r}, {point})"]
+    if ask.relation == "by":  # to pass close by it: the path visits the object
+        return [f"t = pass_through(t, {point})"] if len(objects_of(call)) == 1 else None
     wanted = "move_closer" if ask.relation == "closer" else "move_away"
     if skill == wanted or len(objects_of(call)) != 1:
         return None

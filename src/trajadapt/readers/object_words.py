@@ -23,6 +23,7 @@ from trajadapt.readers.words import (
     SLOWER,
     asks_distance,
     asks_pace,
+    asks_visit,
     longest_names,
     names_in,
 )
@@ -41,7 +42,10 @@ WITHIN = re.compile(
 
 @dataclass(frozen=True)
 class ObjectAsk:
-    """What one clause asks of one object: 'faster', 'slower', 'closer', 'away' or 'side'."""
+    """What one clause asks of one object: 'faster', 'slower', 'closer', 'away', 'side' or 'by'.
+
+    'by' is to pass close by it ("swing by the lamp", "pass close to the box"): the path visits it.
+    """
 
     name: str
     relation: str
@@ -78,8 +82,13 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
         return ObjectAsk(name, "away", clause)
     closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
     if closer == away:
-        return None
+        return _visit(clause, name) if not closer else None
     return ObjectAsk(name, "closer" if closer else "away", clause)
+
+
+def _visit(clause: str, name: str) -> ObjectAsk | None:
+    """'by' where the clause asks to pass close by the object, and neither keeps near it nor refuses."""
+    return ObjectAsk(name, "by", clause) if asks_visit(without_names(clause, [name])) else None
 
 
 def _side(clause: str) -> str:
@@ -99,4 +108,5 @@ def asked_words(ask: ObjectAsk) -> str:
         "side": f"to stay {ask.side} of",
         "closer": "to come closer to",
         "away": "to keep further from",
+        "by": "to pass close by",
     }[ask.relation]

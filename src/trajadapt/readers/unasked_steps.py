@@ -20,7 +20,8 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from trajadapt.model.scene import without_names
-from trajadapt.readers.words import asks_distance, asks_pace
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import asks_distance, asks_pace, asks_visit
 
 
 @dataclass(frozen=True)
@@ -165,7 +166,8 @@ TOPICS = (
             "far",
         ),
         only_with="a speed change",
-        also=asks_distance,  # "a wider berth", "a tighter gap": the readers' one vocabulary
+        also=lambda words: asks_distance(words) or any(asks_visit(c) for c in split_clauses(words)),
+        # "a wider berth", "a tighter gap", "swing by the lamp": the readers' one vocabulary
     ),  # fmt: skip
 )
 STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\w*)\s*[,)]")

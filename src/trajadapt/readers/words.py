@@ -131,6 +131,24 @@ a distance: "reduce the gap", "widen your clearance"; "avoid" asks a clearance, 
 leave to ``avoid``; only the effect's flags count it as away)."""
 
 
+VISIT = re.compile(
+    r"\b(?:visit\w*|via|by\s+way\s+of|(?:swing|stop|drop|call)(?:s|ped|ping|ing|ed)?\s+by"
+    r"|(?:close|right)\s+(?:to|by|past|beside|alongside)"
+    r"|(?:pass|go|goes|going|went|fly|flies|flying|flew|drive\w*|drove|walk\w*|rout\w*|run\w*|ran"
+    r"|head\w*|travel\w*|mov\w*|come|comes|coming|came|get|gets|getting|got|sweep\w*|skim\w*|cruis\w*)"
+    r"\s+(?:\w+\s+)?(?:by|past|next\s+to|beside|alongside|near(?:by)?|through))\b",
+    re.I,
+)
+"""What asks the path to pass close by an object (not closer than it is: close to it): "pass close to",
+"swing by", "fly close past", "route past", "come close to", "go through", "via", "visit"."""
+KEEPING = re.compile(r"\b(?:stay\w*|keep\w*|kept|remain\w*|hold\w*|stick\w*)\b", re.I)
+"""Verbs of keeping: "stay close to X", "keep close to X" ask the path to keep near it, not to visit it."""
+REFUSED = re.compile(r"\b(?:not|never|no|avoid\w*|without|instead\s+of|too)\b|n't\b", re.I)
+"""Words that refuse what follows: "avoid passing close to X", "don't go by X", "too close to X"."""
+PLACING = re.compile(r"^\W*(?:while|when\w*|as|once|if|until|passing|going|driving|flying|walking)\b", re.I)
+"""A lead-in that places another request: "while passing close to X, slow down" visits nothing."""
+
+
 MINIMUM_DISTANCE = re.compile(
     r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
@@ -176,6 +194,18 @@ BACK_UP = re.compile(
     r"\bback(?:s|ed|ing)?\s+(?:(?:it|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|arm))\s+)?up\b", re.I
 )
 """The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
+RIGHT_AS_STRESS = re.compile(
+    r"\b(?<!turn )(?<!turns )(?<!turning )(?<!turned )(?<!veer )(?<!bear )(?<!steer )(?<!swerve )(?<!go )"
+    r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"
+    r"right\s+(?=(?:at|by(?!\s+(?:\d|\.\d|zero|one|two|three|four|five|six|seven|eight|nine|ten|a|an|some"
+    r"|half|about|around|roughly|approximately)\b)|past|next|beside|alongside|through|over|above|below|under|underneath|behind|before"
+    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to)\b)",
+    re.I,
+)
+""""Right" that stresses a place or a time, not the side: "finish right at the vest", "cruise right past
+the lamp" ("turn right at the lamp", "move right past it", "to the right of" stay the side)."""
+ENDING_UP = re.compile(r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?)\s+up\b", re.I)
+"""Phrasal verbs of finishing: "end up 0.8 further front", "wrap up with a slower finish" ask no up."""
 REVERSING = re.compile(
     r"\b(?:revers(?:e|es|ed|ing)|retreat(?:s|ed|ing)?)\b"
     r"(?!\s+(?:the|its|this|that|it|them|order|direction|course|sequence|waypoints?|points?)\b)",
@@ -222,7 +252,7 @@ def said_directions(words: str) -> set[str]:
     """
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
     text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
-    text = REVERSING.sub(" back ", text)
+    text = RIGHT_AS_STRESS.sub(" ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", text)))
     return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 
@@ -234,6 +264,19 @@ def longest_names(named: list[str]) -> list[str]:
 def asks_pace(words: str) -> bool:
     """Whether the words ask about speed: a speed word, or one that asks for more or less of it."""
     return bool(SPEED_WORDS.search(words) or FASTER.search(words) or SLOWER.search(words))
+
+
+def asks_visit(clause: str) -> bool:
+    """Whether a clause asks to pass close by something (``VISIT``).
+
+    Not where it keeps near it, refuses it ("don't go by", "too close to") or only places another
+    request ("while passing close to", "go slower when passing close to the box": a pace's place).
+    """
+    return (
+        bool(VISIT.search(clause))
+        and not any(words.search(clause) for words in (KEEPING, REFUSED, PLACING))
+        and not asks_pace(clause)
+    )
 
 
 def asks_distance(words: str) -> bool:

@@ -11,7 +11,12 @@ arguments (``extend(t, 1.5, 'back')`` goes back; a step the other way is a contr
 effect report flags, not a dropped clause; a step that moves only the start or the goal the other way
 is no contradiction when the words name that end) nor, for up and down, sets a height, the reader adds
 ``shift(t, direction, <the clause's vague word>)`` as the first step; the readers after it give it
-the clause's number ("by 0.1"). Code that is not made of skill calls alone is left alone (what
+the clause's number ("by 0.1"). A clause that asks one end of the path to move ("end 0.2 higher than
+now", "finish 0.3 further to the right", "start further left"; not a move past the goal: "once
+there, go back") gets ``shift_goal`` / ``shift_start`` in the same way, when no step moves that end
+that way. Where exactly one shift of the code goes in a direction no word says, it is the model's
+guess at the asked move, and the asked step takes its place instead of being added. Code that is
+not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
 a reader left out every step it had ("0.3 over to the right" answered with ``pass_over`` of objects
 the words never name), the clause asked a move and nothing makes it. A review note says so.
@@ -23,7 +28,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, called_name, skill_program
+from trajadapt.code_parse import assigned_call, called_name, in_place_of, skill_program
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, said_directions
@@ -38,6 +43,8 @@ PLACE_OF = re.compile(
 the right" is one)."""
 NEGATION = re.compile(r"\b(?:not|never|no|don't|avoid|without)\b|n't\b", re.I)
 HEIGHT_STEPS = ("set_height", "stay_above", "stay_below", "lift_middle")
+UNSAID_GUESSES = ("shift", "shift_goal", "shift_start", "shift_part")
+"""Steps whose direction, when no word says it, is the model's guess at a move the words ask."""
 END_STEPS = {"shift_goal": GOAL, "shift_start": START}
 """Steps that move only an end, with the words that name it: where the words name that end, a step the
 other way does not undo a move of the whole path ("raise the path a little but move the goal down");
@@ -60,20 +67,54 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     added: list[str] = []
     notes: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):
-        direction = asked_move(clause)
-        if direction is None or direction in moved or OPPOSITE_DIRECTIONS[direction] in against:
+        skill, direction = asked_end_move(clause)
+        made = _end_moves(lines, END_NAMES.get(skill, ""))
+        if direction is None:
+            skill, direction, made = "shift", asked_move(clause), moved
+        if direction is None or direction in made or OPPOSITE_DIRECTIONS[direction] in against:
             continue
         if heights and direction in ("up", "down"):
             continue
         word = intensity_word(clause)
-        step = f"{variable} = shift({variable}, {direction!r}{f', {word!r}' if word else ''})"
-        added.append(step)
+        step = f"{variable} = {skill}({variable}, {direction!r}{f', {word!r}' if word else ''})"
+        what = "go" if skill == "shift" else f"move the {END_NAMES[skill]}"
+        guess = _unsaid_shift(lines, words)
+        if guess is not None and not added:
+            notes.append(f"`{lines[guess].strip()}` -> `{step.strip()}`: the words ask to {what} {direction} "
+                         f"({clause.strip()!r}), and no word asks the step's direction")  # fmt: skip
+            lines[guess] = in_place_of(lines[guess], step)
+        else:
+            added.append(step)
+            notes.append(
+                f"added `{step}`: the words ask to {what} {direction} ({clause.strip()!r}) and no step does"
+            )
         moved.add(direction)
         against.add(direction)
-        notes.append(f"added `{step}`: the words ask to go {direction} ({clause.strip()!r}) and no step does")
-    if not added:
+    if not notes:
         return code, []
     return "\n".join([*lines[:start], *added, *lines[start:]]), notes
+
+
+def _end_moves(lines: list[str], end: str) -> set[str]:
+    """The directions the steps move one end in: the whole path's, that end's own, or its part's."""
+    own = {"goal": ("shift_goal", "extend", "append_segment"), "start": ("shift_start",)}.get(end, ())
+    return {
+        direction
+        for line in lines
+        if called_name(line) in ("shift", *own) or (called_name(line) == "shift_part" and end in line)
+        for direction in _directions(line)
+    }
+
+
+def _unsaid_shift(lines: list[str], words: str) -> int | None:
+    """The index of the one shift whose direction no word says, the model's guess at a move; else None."""
+    said = said_directions(words)
+    guesses = [
+        index
+        for index, line in enumerate(lines)
+        if called_name(line) in UNSAID_GUESSES and (found := _directions(line)) and not found & said
+    ]
+    return guesses[0] if len(guesses) == 1 else None
 
 
 def _directions(line: str) -> set[str]:
@@ -87,6 +128,39 @@ def _directions(line: str) -> set[str]:
         for w in words
         if isinstance(w, str) and w.strip().lower() in DIRECTION_SYNONYMS
     }
+
+
+ENDS_MOVED = {
+    "shift_goal": re.compile(
+        rf"{GOAL.pattern}|\b(?:end(?:s|ed|ing)?|finish\w*)\b"
+        r"(?!\s+(?:of|part|section|segment|portion|stretch|half)\b)",
+        re.I,
+    ),
+    "shift_start": re.compile(rf"{START.pattern}|\b(?:start|begin)(?:s|ed|ing)?\b", re.I),
+}
+"""Words that place a move at one end: the goal ("the goal", "end 0.2 higher", "finish further right";
+"the end of the path" is a part) or the start ("the start point", "start 0.1 further left")."""
+END_NAMES = {"shift_goal": "goal", "shift_start": "start"}
+ONCE_THERE = re.compile(
+    r"\b(?:reach\w*|arriv\w*|got|get(?:s|ting)?\s+(?:to|there)|once|after|when\w*|until|before)\b", re.I
+)
+"""A time at the goal ("once the goal is reached, go back"): a move past the goal, not of it."""
+OTHER_PARTS = re.compile(r"\b(?:middle|half|halfway|first|waypoints?|section|segment|portion|part)\b", re.I)
+
+
+def asked_end_move(clause: str) -> tuple[str, str | None]:
+    """The end step and the one direction a clause asks one end of the path to move in ('', None if none).
+
+    "End 0.2 higher than now" asks ``shift_goal`` up; "finish 0.3 further to the right" right; a
+    clause that names both ends, another part, a place ("above the lamp") or a negation asks no end move.
+    """
+    ends = [skill for skill, words in ENDS_MOVED.items() if words.search(clause)]
+    directions = said_directions(clause)
+    if len(ends) != 1 or len(directions) != 1:
+        return "", None
+    if any(words.search(clause) for words in (PLACE_OF, NEGATION, OTHER_PARTS, ONCE_THERE)):
+        return "", None
+    return ends[0], next(iter(directions))
 
 
 def asked_move(clause: str) -> str | None:

@@ -102,3 +102,35 @@ def test_the_added_step_runs_and_makes_the_asked_speed() -> None:
     namespace = {**bind_skills(), "get_trajectory": t.copy}
     exec(code, namespace)  # skill calls alone, checked by the reader
     assert np.allclose(namespace["modified_trajectory"][:, 3], 0.15)
+
+
+@pytest.mark.parametrize(
+    ("words", "written", "kept"),
+    [
+        ("crawl along at a speed of 0.15 near the kettle", "t = scale_speed(t, 0.15, near=detect_objects('kettle'))",
+         "t = set_speed(t, 0.15, near=detect_objects('kettle'))"),
+        ("hold the velocity at 0.4", "t = scale_speed(t, 0.4)", "t = set_speed(t, 0.4)"),
+    ],
+)  # fmt: skip
+def test_a_stated_speed_written_as_a_factor_becomes_the_speed_to_keep(
+    words: str, written: str, kept: str
+) -> None:
+    code, notes = add_asked_paces(program(written), [words], NAMES)
+    assert code.splitlines()[1:-1] == [kept]
+    assert "not a factor" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "written"),
+    [
+        ("halve the speed", "t = scale_speed(t, 0.5)"),  # a factor the words give
+        ("never faster than 0.4", "t = scale_speed(t, 0.4)"),  # a limit, not the speed to keep
+        (
+            "a speed of 0.4 near the crate",
+            "t = scale_speed(t, 0.65, near=detect_objects('crate'))",
+        ),  # another factor
+    ],
+)
+def test_factors_and_limits_stay_factors(words: str, written: str) -> None:
+    code, _ = add_asked_paces(program(written), [words], NAMES)
+    assert written in code

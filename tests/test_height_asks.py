@@ -20,6 +20,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("keep under 1.2", [("stay_below", 1.2)]),
         ("hold an elevation of 0.6", [("set_height", 0.6)]),  # a level with no "at"
         ("raise the height 0.2", []),  # no "at", no "of": not read as a level
+        ("don't climb above z = 0.4", [("stay_below", 0.4)]),  # a height named by its axis
+        ("keep over a z of 0.15", [("stay_above", 0.15)]),
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:

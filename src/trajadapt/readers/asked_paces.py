@@ -15,6 +15,10 @@ itself, "quick one: go left", asks none) when it
   or the phrase table's for its amount word ("a lot slower": 0.45); a number that is no factor
   ("raise the speed by 0.2") asks an amount no factor makes, and nothing is added.
 
+A clause that states the speed to keep, answered with a ``scale_speed`` whose factor is that very
+number ("slow to a speed of 0.2 near the chair" -> ``scale_speed(t, 0.2, near=chair)``: the speed
+taken for a factor), gets the stated speed's step in that line's place.
+
 A clause that names one scene object with a word of place ("near the lamp", "while passing the
 box") places the step there (``near=``); one that names a part ("the first half", "the middle")
 gives ``part=``. The clause is served when a speed step already makes it: any speed step for a
@@ -26,11 +30,19 @@ review note says which words asked it. Code that is not made of skill calls alon
 
 from __future__ import annotations
 
+import ast
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import SPEED_STEPS, after_last_step, call_of, placed_near, skill_program
+from trajadapt.code_parse import (
+    SPEED_STEPS,
+    after_last_step,
+    call_of,
+    in_place_of,
+    placed_near,
+    skill_program,
+)
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
@@ -107,15 +119,43 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     for words in asked:
         for clause in split_clauses(words, names):
             pace = asked_pace(clause, names, variable)
+            taken = _speed_taken_as_factor(lines, pace)
+            if pace is not None and taken is not None:
+                notes.append(f"`{lines[taken].strip()}` -> `{pace.step}`: the words state the speed to keep "
+                             f"({clause.strip()!r}), not a factor")  # fmt: skip
+                lines[taken] = in_place_of(lines[taken], pace.step)
+                continue
             if pace is None or _served(pace, places):
                 continue
             added.append(pace.step)
             places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
             notes.append(f"added `{pace.step}`: the words ask it ({clause.strip()!r}) and no step makes it")
-    if not added:
+    if not notes:
         return code, []
     end = after_last_step(lines, SKILL_NAMES)
     return "\n".join([*lines[:end], *added, *lines[end:]]), notes
+
+
+def _speed_taken_as_factor(lines: list[str], pace: AskedPace | None) -> int | None:
+    """The one ``scale_speed`` whose factor is the speed the clause states, else None.
+
+    "Slow to a speed of 0.2 near the chair" came back as ``scale_speed(t, 0.2, near=...)``: the
+    speed to keep, taken for a factor.
+    """
+    stated = STATED_SPEED.search(pace.clause) if pace is not None and "set_speed(" in pace.step else None
+    if stated is None:
+        return None
+    value = float(stated.group(1) or stated.group(2))
+    taken = [
+        index
+        for index, line in enumerate(lines)
+        if (call := call_of(line, ("scale_speed",))) is not None
+        and len(call.args) > 1
+        and isinstance(call.args[1], ast.Constant)
+        and isinstance(call.args[1].value, int | float)
+        and abs(float(call.args[1].value) - value) < 1e-9
+    ]
+    return taken[0] if len(taken) == 1 else None
 
 
 def asked_pace(clause: str, names: list[str], variable: str = "t") -> AskedPace | None:

@@ -4,7 +4,8 @@ A small model writes ``stay_below(t, 0.1)`` for "stay at a height of 0.1 from th
 number is right, the relation is not (the path should fly at 0.1, not merely under it). The words
 around a height number say which skill keeps it: "at a height of 0.1", "at an altitude of 2", "fly
 at 1.5" -> ``set_height``; "below", "under", "lower than", "at most" -> ``stay_below``; "above",
-"over", "higher than", "at least", "exceed" -> ``stay_above``; a negation just before turns the
+"over", "higher than", "at least", "exceed" -> ``stay_above`` (the height may be named by its axis:
+"higher than z = 0.2"); a negation just before turns the
 relation round ("never higher than 3", "do not exceed 3" -> ``stay_below``). When the words give
 exactly one such height and the code has exactly one height step with that number and another
 skill, the step's skill is replaced; with no height step at all, so is the one clearance from a
@@ -33,9 +34,11 @@ BELOW = r"below|under(?:neath)?|lower than|at most"
 ABOVE = r"above|over|higher than|more than|at least|exceed\w*"
 LEVEL = r"(?:height|altitude|elevation)"
 AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover|stay|keep|cruise|move)\w* at"
+NAMED = r"(?:a height of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
+"""How a height may be named before its number: "a height of 0.2", "z = 0.2", "a z of 0.2"."""
 RELATIONS = (
-    ("stay_below", re.compile(rf"\b(?:{BELOW})\s+(?:a height of\s+)?{NUMBER}", re.I)),
-    ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+(?:a height of\s+)?{NUMBER}", re.I)),
+    ("stay_below", re.compile(rf"\b(?:{BELOW})\s+{NAMED}{NUMBER}", re.I)),
+    ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+{NAMED}{NUMBER}", re.I)),
     ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
 )
 HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")

@@ -87,6 +87,7 @@ def test_no_reader_imports_another_reader() -> None:
 
     helpers = {
         "trajadapt.readers.words",
+        "trajadapt.readers.end_words",
         "trajadapt.readers.object_words",
         "trajadapt.readers.clause_split",
         "trajadapt.readers.request_words",

@@ -31,16 +31,15 @@ from trajadapt.checks.effect import NOTICEABLE, Effect, ObjectEffect
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS, Axes
 from trajadapt.readers.asked_directions import asked_move
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.end_words import kept_ends
 from trajadapt.readers.object_words import ObjectAsk, object_asks
 from trajadapt.readers.request_words import request_words
 from trajadapt.readers.words import (
     FASTER,
-    GOAL,
     MINIMUM_DISTANCE,
     PART_OR_END,
     PLACE_WORDS,
     SLOWER,
-    START,
     asks_distance,
     asks_pace,
     longest_names,
@@ -49,28 +48,6 @@ from trajadapt.readers.words import (
 
 AVOIDED = re.compile(r"\b(?:avoid\w*|clear of)\b", re.I)
 """Words that ask a clearance: the flags read them as asking away (the readers leave them to ``avoid``)."""
-_END = r"(start\w*|begin\w*|initial|end|ends|ending|endpoints?|goal|final|destination|both\s+ends)"
-_ENDS = (
-    rf"(?:the\s+)?{_END}(?:\s+(?:and|&)\s+(?:the\s+)?{_END})?(?:\s+(?:positions?|points?|poses?|waypoints?))?"
-)
-_STATE = (
-    r"(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place"
-    r"|where\s+(?:it|they)\s+(?:is|are)|as\s+(?:it|they)\s+(?:is|are))"
-)
-KEPT_ENDS = (
-    re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
-    re.compile(
-        rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b"
-        r"(?!\s+(?:speed|pace|velocity|height|altitude))",
-        re.I,
-    ),
-    re.compile(
-        rf"\b{_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
-        re.I,
-    ),
-)
-"""Words that keep an end of the path where it is: "keeping the start and end positions the same",
-"don't change the start and end positions", "the endpoints stay fixed"."""
 NOT_ASKED = re.compile(r"\b(?:not|never|no|don't|doesn't|without)\b|n't\b|\bthan\s+(?:\d|\.\d)", re.I)
 """A negation or a limit: "don't slow down", "never faster than 0.3" ask no change of pace (the plain
 form leaves them as said)."""
@@ -184,12 +161,7 @@ def _kept_end_flags(requests: Sequence[str], effect: Effect, noticeable: float) 
 
     A later request that names the end ("now move the goal left") takes the keeping back.
     """
-    kept: set[str] = set()
-    for request in requests:
-        kept -= {end for end, named in (("start", START), ("goal", GOAL)) if named.search(request)}
-        for pattern in KEPT_ENDS:
-            for found in pattern.finditer(request):
-                kept |= {end for word in found.groups() if word for end in _ends_of(word)}
+    kept = kept_ends(requests)
     moves = {
         "start": (effect.start_moved, effect.start_direction),
         "goal": (effect.goal_moved, effect.goal_direction),
@@ -199,11 +171,3 @@ def _kept_end_flags(requests: Sequence[str], effect: Effect, noticeable: float) 
         for end in ("start", "goal")
         if end in kept and moves[end][0] > noticeable
     ]
-
-
-def _ends_of(word: str) -> tuple[str, ...]:
-    """Which ends a word names: ('start',), ('goal',), or both (endpoints, both ends)."""
-    word = word.lower()
-    if word.startswith(("start", "begin", "initial")):
-        return ("start",)
-    return ("start", "goal") if word.startswith(("endpoint", "both")) or word == "ends" else ("goal",)

@@ -24,6 +24,7 @@ from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.kept_ends import keep_kept_ends
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.object_mentions import chosen_referents
 from trajadapt.readers.paced_places import leave_out_moves_of_paced_places
@@ -97,6 +98,8 @@ READERS: tuple[Reader, ...] = (
            leave_out_moves_of_paced_places),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
            profile_paces),
+    Reader("kept-ends", "an end of the path the words keep where it is, and steps that move it",
+           lambda code, asked, _: keep_kept_ends(code, asked)),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""
 

@@ -1,0 +1,59 @@
+"""Words that keep an end of the path where it is: "keep the start fixed", "with the endpoints pinned".
+
+Read by the kept-ends reader (which puts such an end back) and by the effect's flags (which say
+when it moved). The words that name each end are ``words.START`` and ``words.GOAL``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from trajadapt.readers.words import GOAL, START
+
+_END = r"(start\w*|begin\w*|initial|end|ends|ending|endpoints?|goal|final|destination|both\s+ends)"
+_ENDS = (
+    rf"(?:both\s+)?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
+    r"(?:\s+(?:positions?|points?|poses?|waypoints?))?"
+)
+_STATE = (
+    r"(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
+    r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:it|they)\s+(?:is|are|was|were))"
+)
+KEPT_ENDS = (
+    re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
+    re.compile(
+        rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b"
+        r"(?!\s+(?:speed|pace|velocity|height|altitude))",
+        re.I,
+    ),
+    re.compile(
+        rf"\b{_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
+        re.I,
+    ),
+    re.compile(rf"\bwith\s+{_ENDS}\s+(?:fixed|pinned|unchanged|untouched|in\s+place|locked)", re.I),
+)
+"""Words that keep an end of the path where it is: "keeping the start and end positions the same",
+"don't change the start and end positions", "the endpoints stay fixed"."""
+
+
+def kept_ends(requests: Sequence[str]) -> set[str]:
+    """The ends of the path ('start', 'goal') the words keep where they are ("keep the start and end fixed").
+
+    A later request that names the end ("now move the goal left") takes the keeping back.
+    """
+    kept: set[str] = set()
+    for request in requests:
+        kept -= {end for end, named in (("start", START), ("goal", GOAL)) if named.search(request)}
+        for pattern in KEPT_ENDS:
+            for found in pattern.finditer(request):
+                kept |= {end for word in found.groups() if word for end in _ends_of(word)}
+    return kept
+
+
+def _ends_of(word: str) -> tuple[str, ...]:
+    """Which ends a word names: ('start',), ('goal',), or both (endpoints, both ends)."""
+    word = word.lower()
+    if word.startswith(("start", "begin", "initial")):
+        return ("start",)
+    return ("start", "goal") if word.startswith(("endpoint", "both")) or word == "ends" else ("goal",)

@@ -1,0 +1,96 @@
+"""An end of the path the words keep where it is, and steps that move it: the end put back.
+
+"Keep the goal where it is" beside ``pass_over`` of an object near the goal, "keep both ends in
+place" beside a ``shift_start`` nobody asked, "keeping start and end the same" beside two whole-path
+shifts: the steps moved an end the words keep (``words.kept_ends``: "keep the start fixed", "with
+the endpoints pinned", "don't move the start or the goal"). For each kept end:
+
+- a step that moves only that end (``shift_start`` for the start, ``shift_goal`` for the goal) asks
+  the opposite of the words and is left out;
+- when another step may move that end (any step that changes positions, except those that keep both
+  ends by their promise: ``KEEP_ENDS``), the end is put back as the last step: the goal with
+  ``reach(t, detect_objects('goal'))``, the start with ``pass_through(t, detect_objects('start'),
+  0)`` (both bend the path back smoothly, and do nothing where the end did not move). A program that
+  goes on past the goal (``extend``, ``append_segment``) keeps its goal as moved.
+
+Code that is not made of skill calls alone is left alone. A review note says what changed and why.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterable
+
+from trajadapt.code_parse import SPEED_STEPS, after_last_step, assigned_call, called_name, skill_program
+from trajadapt.readers.end_words import kept_ends
+from trajadapt.skills import SKILL_NAMES
+
+OWN_MOVE = {"start": "shift_start", "goal": "shift_goal"}
+"""The step that moves only each end."""
+KEEP_ENDS = frozenset(
+    {"move_closer", "move_away", "lift_middle", "resample", "wait", "path_size", "midpoint"}
+)
+"""Steps that change positions and keep both ends where they are, by their promise."""
+PUT_BACK = {
+    "goal": "{t} = reach({t}, detect_objects('goal'))",
+    "start": "{t} = pass_through({t}, detect_objects('start'), 0)",
+}
+"""The step that puts each end back where the original path has it."""
+PAST_THE_GOAL = ("extend", "append_segment")
+LEAVES = {
+    "start": ("middle", "second half", "end", "final", "goal"),
+    "goal": ("middle", "first half", "start", "beginning"),
+}
+"""The parts of ``shift_part`` that leave each end where it is."""
+
+
+def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with the ends the words keep left where they are (see the module), and notes."""
+    kept = kept_ends(list(asked))
+    lines = code.splitlines()
+    program = skill_program(lines, SKILL_NAMES)
+    if not kept or program is None:
+        return code, []
+    variable, notes = program[1], list[str]()
+    for end in sorted(kept):
+        for line in [x for x in lines if called_name(x) == OWN_MOVE[end]]:
+            lines.remove(line)
+            notes.append(f"left out `{line.strip()}`: the words keep the {end} where it is")
+    moving = {end for end in kept if _moves_ends(lines, end)}  # before any end is put back
+    for end in sorted(moving):
+        step = PUT_BACK[end].format(t=variable)
+        if step not in (x.strip() for x in lines):
+            index = after_last_step(lines, SKILL_NAMES)
+            lines.insert(index, step)
+            notes.append(f"added `{step}`: the words keep the {end} where it is, and a step may move it")
+    return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _moves_ends(lines: list[str], end: str) -> bool:
+    """Whether a step may move the end: one that changes positions and does not keep that end."""
+    names = [called_name(line) for line in lines]
+    if end == "goal" and any(name in PAST_THE_GOAL for name in names):
+        return False
+    return any(_may_move(line, end) for line in lines)
+
+
+def _may_move(line: str, end: str) -> bool:
+    """Whether the step on ``line`` may move the end (``shift`` keeps the start; a middle keeps both)."""
+    name = called_name(line)
+    if name not in SKILL_NAMES or name in KEEP_ENDS or name in SPEED_STEPS or name == OWN_MOVE[end]:
+        return False
+    if name == "shift_part":
+        return _part(line) not in LEAVES[end]
+    return not (name == "shift" and end == "start" and "alternate" not in line)
+
+
+def _part(line: str) -> str | None:
+    """The part a ``shift_part`` line names (its fourth argument or ``part=``), if a word."""
+    found = assigned_call(line)
+    if found is None:
+        return None
+    call = found[1]
+    node = next(
+        (k.value for k in call.keywords if k.arg == "part"), call.args[3] if len(call.args) > 3 else None
+    )
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None

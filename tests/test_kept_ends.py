@@ -1,0 +1,70 @@
+"""An end the words keep where it is stays there (readers.kept_ends), whatever step moved it.
+
+Written from fresh-a/fresh-b (new instructions: "keep both ends in place", "keep the goal where it
+is"); the wordings here are none of any set's.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers.end_words import kept_ends
+from trajadapt.readers.kept_ends import keep_kept_ends
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+def steps_after(words: str, *steps: str) -> list[str]:
+    return keep_kept_ends(program(*steps), [words])[0].splitlines()[1:-1]
+
+
+@pytest.mark.parametrize(
+    ("words", "ends"),
+    [
+        ("with the endpoints pinned, push the middle up", {"start", "goal"}),
+        ("the two ends stay put", {"start", "goal"}),
+        ("the ends stay put while you weave", {"start", "goal"}),
+        ("don't touch the start or the goal", {"start", "goal"}),
+        ("keep both the beginning and the destination fixed", {"start", "goal"}),
+        ("leave the start where it was", {"start"}),
+        ("keep the goal speed the same", set()),  # a pace of an end, not its place
+        ("keep the start fixed. now move the start left", set()),  # taken back by a later request
+    ],
+)
+def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:
+    assert kept_ends(words.split(". ")) == ends
+
+
+def test_a_step_that_moves_only_a_kept_end_is_left_out() -> None:
+    assert steps_after("arc the middle left, ends untouched... the ends stay put", "t = lift_middle(t, 'left')",
+                       "t = shift_goal(t, 'left', 0.1)") == ["t = lift_middle(t, 'left')"]  # fmt: skip
+
+
+def test_a_kept_end_another_step_may_move_is_put_back_last() -> None:
+    assert steps_after("tilt it 20 degrees with the endpoints pinned", "t = rotate(t, 20)") == [
+        "t = rotate(t, 20)",
+        "t = reach(t, detect_objects('goal'))",
+        "t = pass_through(t, detect_objects('start'), 0)",
+    ]
+
+
+@pytest.mark.parametrize(
+    "steps",
+    [
+        ("t = lift_middle(t, 'up', 0.1)",),  # keeps both ends by its promise
+        ("t = shift_part(t, 'up', 0.1, 'middle')",),
+        ("t = move_away(t, detect_objects('box'))", "t = scale_speed(t, 0.5)"),
+        ("t = shift(t, 'up')", "t = extend(t, 0.2)"),  # goes on past the goal: the goal moves as asked
+    ],
+)
+def test_steps_that_keep_the_ends_get_nothing(steps: tuple[str, ...]) -> None:
+    assert steps_after("keep the goal where it is", *steps) == list(steps)
+
+
+def test_a_whole_path_shift_keeps_its_start_so_only_the_goal_is_put_back() -> None:
+    assert steps_after("the ends stay put; drift up a bit", "t = shift(t, 'up', 'a bit')") == [
+        "t = shift(t, 'up', 'a bit')",
+        "t = reach(t, detect_objects('goal'))",
+    ]

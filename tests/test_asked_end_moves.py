@@ -86,3 +86,14 @@ def test_an_end_already_moved_that_way_gets_nothing() -> None:
 )
 def test_phrasal_and_stressing_words_say_no_direction(words: str, directions: set[str]) -> None:
     assert said_directions(words) == directions
+
+
+def test_a_part_move_in_a_direction_no_word_says_takes_the_clause_direction() -> None:
+    assert steps_after(
+        "lower the first half by 0.05", "t = shift_part(t, 'left', 0.05, part='first half')"
+    ) == ["t = shift_part(t, 'down', 0.05, part='first half')"]
+
+
+def test_a_part_move_in_a_said_direction_stays() -> None:
+    written = "t = shift_part(t, 'left', 0.05, part='first half')"
+    assert steps_after("move the first half left by 0.05, and lower the goal", written)[-1] == written

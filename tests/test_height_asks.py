@@ -89,15 +89,41 @@ def test_levels_other_numbers_and_other_directions_keep_the_height_step(step: st
     [
         ("t = avoid(t, [0, 0, 0], 0.3)", "cruise at an altitude of 0.3 above the floor", "t = set_height(t, 0.3)"),
         ("t = move_away(t, (0.0, 0.0, 0.0), 0.5)", "never go below 0.5, the rotors need room", "t = stay_above(t, 0.5)"),
-        # a clearance from a named object, another number, or a height step already there: kept
-        ("t = avoid(t, detect_objects('lamp'), 0.3)", "fly at a height of 0.3", None),
-        ("t = avoid(t, [0, 0, 0], 0.2)", "fly at a height of 0.3", None),
+        # a clearance from a named object or by another number is kept, and the height is added after it
+        ("t = avoid(t, detect_objects('lamp'), 0.3)", "fly at a height of 0.3",
+         "t = avoid(t, detect_objects('lamp'), 0.3)\nt = set_height(t, 0.3)"),
+        ("t = avoid(t, [0, 0, 0], 0.2)", "fly at a height of 0.3", "t = avoid(t, [0, 0, 0], 0.2)\nt = set_height(t, 0.3)"),
     ],
 )  # fmt: skip
 def test_a_clearance_from_a_made_up_point_by_the_asked_height_becomes_the_height_step(
-    step: str, words: str, expected: str | None
+    step: str, words: str, expected: str
 ) -> None:
     code = f"t = get_trajectory()\n{step}\nmodified_trajectory = t"
     changed, notes = relate_heights(code, [words])
-    assert changed == (code if expected is None else code.replace(step, expected))
-    assert bool(notes) == (expected is not None)
+    assert changed == code.replace(step, expected)
+    assert len(notes) == 1
+
+
+@pytest.mark.parametrize(
+    ("words", "added"),
+    [
+        ("never climb above 1.2, and hurry", "t = stay_below(t, 1.2)"),
+        ("keep the altitude at least 0.4 the whole way", "t = stay_above(t, 0.4)"),
+    ],
+)
+def test_a_height_no_step_keeps_is_added_last(words: str, added: str) -> None:
+    code, notes = relate_heights(CODE.format(step="t = scale_speed(t, 1.4)"), [words])
+    assert code.splitlines()[1:-1] == ["t = scale_speed(t, 1.4)", added]
+    assert "no step keeps it" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "keep more than 0.5 away from the box",  # a distance, not a height
+        "stay at least 0.3 clear of the lamp",
+    ],
+)
+def test_a_number_of_distance_adds_no_height(words: str) -> None:
+    code = CODE.format(step="t = move_away(t, detect_objects('box'))")
+    assert relate_heights(code, [words]) == (code, [])

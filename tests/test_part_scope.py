@@ -210,3 +210,15 @@ def test_an_object_move_of_the_first_waypoints_is_made_on_them(words: str, step:
 )
 def test_object_moves_the_clause_does_not_place_on_the_first_waypoints_stay(words: str, step: str) -> None:
     assert scope_to_parts(CODE.format(step=step), [words]) == (CODE.format(step=step), [])
+
+
+@pytest.mark.parametrize("words", ["finish precisely at the lamp", "terminate directly on the lamp"])
+def test_stopping_where_the_path_passes_an_object_said_as_its_end_is_a_new_goal(words: str) -> None:
+    code, notes = scope_to_parts(CODE.format(step="t = stop_at(t, detect_objects('lamp'))"), [words])
+    assert code.splitlines()[1:-1] == ["t = reach(t, detect_objects('lamp'))"]
+    assert "gives a new goal" in notes[0]
+
+
+def test_a_stop_at_an_object_with_no_new_goal_stays() -> None:
+    code = CODE.format(step="t = stop_at(t, detect_objects('lamp'))")
+    assert scope_to_parts(code, ["stop when you get near the lamp"]) == (code, [])

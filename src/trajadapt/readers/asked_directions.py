@@ -31,7 +31,7 @@ from collections.abc import Iterable
 from trajadapt.code_parse import assigned_call, called_name, in_place_of, skill_program
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, said_directions
+from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, part_named, said_directions
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(
@@ -55,6 +55,9 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     """``code`` with a shift for each direction a clause asks and no step makes (see the module)."""
     lines = code.splitlines()
     words = " ".join(asked)
+    if skill_program(lines, SKILL_NAMES, empty=True) is None:
+        return code, []
+    notes = _directed_part_moves(lines, asked, words)
     named = {step for step, end in END_STEPS.items() if end.search(words)}
     steps = [(called_name(line), _directions(line)) for line in lines]
     moved = {direction for _, directions in steps for direction in directions}
@@ -65,7 +68,6 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
         return code, []
     start, variable = program[0] + 1, program[1]
     added: list[str] = []
-    notes: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):
         skill, direction = asked_end_move(clause)
         made = _end_moves(lines, END_NAMES.get(skill, ""))
@@ -93,6 +95,32 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     if not notes:
         return code, []
     return "\n".join([*lines[:start], *added, *lines[start:]]), notes
+
+
+def _directed_part_moves(lines: list[str], asked: Iterable[str], words: str) -> list[str]:
+    """The one part move in a direction no word says, turned the way the clause naming a part asks.
+
+    "Raise the second half of the path by 0.1" came back as ``shift_part(t, 'right', 0.1, part='second
+    half')``: the part and the amount are the clause's, the direction the model's guess.
+    """
+    for clause in (c for request in asked for c in split_clauses(request)):
+        directions = said_directions(clause)
+        if len(directions) != 1 or part_named(clause) is None:
+            continue
+        if any(pattern.search(clause) for pattern in (PLACE_OF, NEGATION, ONCE_THERE)):
+            continue
+        guess = _unsaid_shift(lines, words)
+        found = assigned_call(lines[guess]) if guess is not None else None
+        if guess is None or found is None or found[2] != "shift_part" or len(found[1].args) < 2:
+            continue
+        before, direction = lines[guess].strip(), next(iter(directions))
+        found[1].args[1] = ast.Constant(direction)
+        lines[guess] = in_place_of(
+            lines[guess], f"{lines[guess].split('=')[0].strip()} = {ast.unparse(found[1])}"
+        )
+        return [f"`{before}` -> `{lines[guess].strip()}`: the words ask the part to go {direction} "
+                f"({clause.strip()!r}), and no word asks the step's direction"]  # fmt: skip
+    return []
 
 
 def _end_moves(lines: list[str], end: str) -> set[str]:

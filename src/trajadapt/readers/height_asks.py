@@ -25,9 +25,10 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import DISTANCE_STEPS, assigned_call, in_place_of
+from trajadapt.code_parse import DISTANCE_STEPS, after_last_step, assigned_call, in_place_of, skill_program
 from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.words import NUMBER_TEXT
+from trajadapt.skills import SKILL_NAMES
 
 NUMBER = rf"({NUMBER_TEXT})"
 BELOW = r"below|under(?:neath)?|lower than|at most"
@@ -42,6 +43,13 @@ RELATIONS = (
     ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
 )
 HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
+VERTICAL = re.compile(
+    r"\b(?:above|below|under(?:neath)?|higher\s+than|lower\s+than|altitude|height|elevation|z\s*=|a\s+z\s+of)",
+    re.I,
+)
+"""Words that speak of height itself, so that a height they give may be added as a step."""
+SIDEWAYS = re.compile(r"\b(?:away|from|clearance|distance|apart)\b", re.I)
+"""Words of a distance from something: a number after "more than" there is no height."""
 GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
 
 
@@ -77,12 +85,30 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     step = _one_height_step(lines, height, options=False)
     if step is None and not any(_height_step(x, options=True) for x in lines):
         step = _clearance_from_a_made_up_point(lines, height)
+        if step is None:
+            return _added_height(lines, skill, height, words)
     if step is None or step[1] == skill:
         return code, []
     line, changed = lines[step[0]], f"t = {skill}(t, {height:g})"
     lines[step[0]] = in_place_of(line, changed)
     return "\n".join(lines), [
         f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
+    ]
+
+
+def _added_height(lines: list[str], skill: str, height: float, words: str) -> tuple[str, list[str]]:
+    """The height the words ask as the last step, when no step keeps any height ("fly no higher than 1.6").
+
+    Only for words that speak of height itself ("above", "below", "higher than", "altitude", "z"): "more
+    than 0.5 away from the box" gives no height to add.
+    """
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if program is None or not VERTICAL.search(words) or SIDEWAYS.search(words):
+        return "\n".join(lines), []
+    step = f"{program[1]} = {skill}({program[1]}, {height:g})"
+    lines.insert(after_last_step(lines, SKILL_NAMES), step)
+    return "\n".join(lines), [
+        f"added `{step}`: the instruction asks for {_relation(skill)} {height:g} and no step keeps it"
     ]
 
 

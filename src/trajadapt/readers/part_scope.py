@@ -62,9 +62,13 @@ from trajadapt.readers.words import (
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
 SENTENCES = re.compile(r"[;!?]|\.(?!\d)|\b(?:then|but)\b", re.I)
+NEW_GOAL_STEPS = ("pass_through", "move_closer", "stop_at")
+"""Steps a model writes for "end at X" that leave the path ending elsewhere: ``stop_at`` stops where the
+path passes nearest X, not at X."""
 NEW_GOAL = re.compile(
     r"\bnew\s+(?:goal|end|destination)|\b(?:goal|destination)(?:\s+(?:position|point))?\s+(?:is|should be"
-    r"|becomes|will be|must be)\b|\b(?:end|finish|terminate)\s+(?:at|on|in)\b"
+    r"|becomes|will be|must be)\b"
+    r"|\b(?:end|finish|terminate)\s+(?:(?:exactly|right|directly|precisely|just)\s+)?(?:at|on|in)\b"
     r"|\b(?:set|make|move|change|put|place|relocate)\s+(?:the\s+|its\s+)?(?:goal|destination)"
     r"(?:\s+(?:position|point))?\s+(?:to|at|be|as|onto)\b|\bas\s+(?:the\s+|its\s+)?(?:new\s+)?(?:goal|destination)\b",
     re.I,
@@ -275,21 +279,19 @@ def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
 
 
 def _reach_the_new_goal(lines: list[str], notes: list[str], words: str) -> None:
-    """The one ``pass_through``/``move_closer`` of the new goal's objects, as ``reach`` of their point.
+    """The one ``pass_through``/``move_closer``/``stop_at`` of the new goal's objects, as ``reach`` of it.
 
     The clause that says "new goal" and the words after it (to the end of their sentence or a
     "then"/"but") must name every object the point is made of: "make the midpoint of the box and
     the lamp the new goal" gives one, "go closer to the box and end at the goal" gives none.
     """
-    detected = [
-        name for _, call in _calls(lines, ("pass_through", "move_closer")) for name in _detected_names(call)
-    ]
+    detected = [name for _, call in _calls(lines, NEW_GOAL_STEPS) for name in _detected_names(call)]
     saying = [clause for clause in split_clauses(words, detected) if NEW_GOAL.search(clause)]
     following = [SENTENCES.split(words[m.end() :])[0] for m in NEW_GOAL.finditer(words)]
     given = " ".join(saying + following)
     passing = [
         (i, call)
-        for i, call in _calls(lines, ("pass_through", "move_closer"))
+        for i, call in _calls(lines, NEW_GOAL_STEPS)
         if _scene_point(call) and all(names_in(given, [n]) for n in _detected_names(call))
     ]
     if len(passing) != 1 or any(called_name(line) in ("reach", "append_segment") for line in lines):

@@ -68,3 +68,8 @@ def test_a_whole_path_shift_keeps_its_start_so_only_the_goal_is_put_back() -> No
         "t = shift(t, 'up', 'a bit')",
         "t = reach(t, detect_objects('goal'))",
     ]
+
+
+def test_a_move_of_the_other_end_keeps_this_one() -> None:
+    written = ("t = shift_goal(t, 'left', 0.15)", "t = scale_speed(t, 0.65)")
+    assert steps_after("move the goal 0.15 left without touching the start", *written) == list(written)

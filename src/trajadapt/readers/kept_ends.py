@@ -26,7 +26,7 @@ from trajadapt.readers.end_words import kept_ends
 from trajadapt.skills import SKILL_NAMES
 
 OWN_MOVE = {"start": "shift_start", "goal": "shift_goal"}
-"""The step that moves only each end."""
+"""The step that moves only each end (and so keeps the other: ``shift_goal`` keeps the start)."""
 KEEP_ENDS = frozenset(
     {"move_closer", "move_away", "lift_middle", "resample", "wait", "path_size", "midpoint"}
 )
@@ -77,8 +77,8 @@ def _moves_ends(lines: list[str], end: str) -> bool:
 def _may_move(line: str, end: str) -> bool:
     """Whether the step on ``line`` may move the end (``shift`` keeps the start; a middle keeps both)."""
     name = called_name(line)
-    if name not in SKILL_NAMES or name in KEEP_ENDS or name in SPEED_STEPS or name == OWN_MOVE[end]:
-        return False
+    if name not in SKILL_NAMES or name in KEEP_ENDS or name in SPEED_STEPS or name in OWN_MOVE.values():
+        return False  # an end's own move is left out above, or keeps this end
     if name == "shift_part":
         return _part(line) not in LEAVES[end]
     return not (name == "shift" and end == "start" and "alternate" not in line)

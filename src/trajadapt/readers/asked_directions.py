@@ -55,7 +55,8 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     """``code`` with a shift for each direction a clause asks and no step makes (see the module)."""
     lines = code.splitlines()
     words = " ".join(asked)
-    if skill_program(lines, SKILL_NAMES, empty=True) is None:
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if program is None:
         return code, []
     notes = _directed_part_moves(lines, asked, words)
     named = {step for step, end in END_STEPS.items() if end.search(words)}
@@ -63,9 +64,6 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     moved = {direction for _, directions in steps for direction in directions}
     against = {direction for name, directions in steps if name not in named for direction in directions}
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
-    program = skill_program(lines, SKILL_NAMES, empty=True)
-    if program is None:
-        return code, []
     start, variable = program[0] + 1, program[1]
     added: list[str] = []
     for clause in (c for words in asked for c in split_clauses(words)):
@@ -103,21 +101,19 @@ def _directed_part_moves(lines: list[str], asked: Iterable[str], words: str) -> 
     "Raise the second half of the path by 0.1" came back as ``shift_part(t, 'right', 0.1, part='second
     half')``: the part and the amount are the clause's, the direction the model's guess.
     """
+    guess = _unsaid_shift(lines, words)
+    found = assigned_call(lines[guess]) if guess is not None else None
+    if guess is None or found is None or found[2] != "shift_part" or len(found[1].args) < 2:
+        return []
     for clause in (c for request in asked for c in split_clauses(request)):
         directions = said_directions(clause)
         if len(directions) != 1 or part_named(clause) is None:
             continue
         if any(pattern.search(clause) for pattern in (PLACE_OF, NEGATION, ONCE_THERE)):
             continue
-        guess = _unsaid_shift(lines, words)
-        found = assigned_call(lines[guess]) if guess is not None else None
-        if guess is None or found is None or found[2] != "shift_part" or len(found[1].args) < 2:
-            continue
         before, direction = lines[guess].strip(), next(iter(directions))
         found[1].args[1] = ast.Constant(direction)
-        lines[guess] = in_place_of(
-            lines[guess], f"{lines[guess].split('=')[0].strip()} = {ast.unparse(found[1])}"
-        )
+        lines[guess] = in_place_of(lines[guess], ast.unparse(found[0]))
         return [f"`{before}` -> `{lines[guess].strip()}`: the words ask the part to go {direction} "
                 f"({clause.strip()!r}), and no word asks the step's direction"]  # fmt: skip
     return []

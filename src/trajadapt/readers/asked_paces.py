@@ -142,10 +142,9 @@ def _speed_taken_as_factor(lines: list[str], pace: AskedPace | None) -> int | No
     "Slow to a speed of 0.2 near the chair" came back as ``scale_speed(t, 0.2, near=...)``: the
     speed to keep, taken for a factor.
     """
-    stated = STATED_SPEED.search(pace.clause) if pace is not None and "set_speed(" in pace.step else None
-    if stated is None:
+    value = _stated_value(pace.clause) if pace is not None else None
+    if value is None:
         return None
-    value = float(stated.group(1) or stated.group(2))
     taken = [
         index
         for index, line in enumerate(lines)
@@ -177,10 +176,16 @@ def asked_pace(clause: str, names: list[str], variable: str = "t") -> AskedPace 
 
 def _stated_speed(clause: str, t: str, where: str) -> str | None:
     """``set_speed`` of the speed the clause states as the one to keep (not a limit), if it states one."""
+    value = _stated_value(clause)
+    return None if value is None else f"set_speed({t}, {value:g}{where})"
+
+
+def _stated_value(clause: str) -> float | None:
+    """The speed the clause states as the one to keep ("at a speed of 0.2"; not a limit), if any."""
     stated = STATED_SPEED.search(clause)
     if stated is None or LIMIT.search(clause):
         return None
-    return f"set_speed({t}, {float(stated.group(1) or stated.group(2)):g}{where})"
+    return float(stated.group(1) or stated.group(2))
 
 
 def _changed_pace(clause: str, t: str, where: str) -> str | None:

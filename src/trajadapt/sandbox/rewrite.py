@@ -22,6 +22,8 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection
 
+from trajadapt.code_parse import SPEED_STEPS
+
 
 def assign_discarded_results(tree: ast.Module, functions: Collection[str]) -> list[str]:
     """Rewrite ``f(var, ...)`` statements (f in ``functions``) to ``var = f(var, ...)`` in place.
@@ -106,7 +108,7 @@ MOVES = frozenset(
     {"shift", "shift_goal", "shift_start", "shift_part", "lift_middle", "reach", "move_closer", "move_away"}
 )
 """Steps that move the path (or an end) by an amount or to an end point, and so may run before a pass."""
-SPEEDS = frozenset({"scale_speed", "set_speed", "speed_profile"})
+SPEEDS = frozenset(SPEED_STEPS)
 """Steps that change the speed alone: they may sit among the others in any order."""
 
 

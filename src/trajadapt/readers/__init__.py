@@ -23,6 +23,7 @@ from trajadapt.readers.asked_paces import add_asked_paces
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.curve_asks import bend_as_asked
+from trajadapt.readers.end_places import end_at_asked_places
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.kept_ends import keep_kept_ends
 from trajadapt.readers.object_asks import replace_object_steps
@@ -87,6 +88,8 @@ READERS: tuple[Reader, ...] = (
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("part-scope", "the part of the path a clause moves",
            lambda code, asked, _: scope_to_parts(code, asked)),
+    Reader("end-places", "an object the words ask the path to end at, and no step ends there",
+           end_at_asked_places),
     Reader("alternating-shifts", "shifts the words ask to alternate in blocks of waypoints",
            lambda code, asked, _: alternate_shifts(code, asked)),
     Reader("curve-asks", "a step that bends the path the other way from the words",

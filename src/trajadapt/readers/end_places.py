@@ -1,0 +1,191 @@
+"""A place the words ask the path to end at: the step that ends it there, in place of those written for it.
+
+"Finish at the lamp", "wrap up at the red cup", "land on the mat", "make the quill your end point":
+the path's end goes to the object, ``reach(t, lamp)``. "Wind up next to the chair", "end beside the
+sofa": the path ends where it passes nearest the object, ``stop_at(t, chair)`` (as "stop near the
+stinkhorn" is read). A small model answers such words with a step for another job (a side kept,
+the end part shifted, the object put in a pass over a list) or with no step of the object at all.
+
+A clause asks an end place (``asked_end``) when an ending verb is followed by a word of place and
+then by the one scene object the rest of the clause names ("finish right at", "end up beside",
+"arrive at", "come to rest on"), or when it names the object as the end ("make X your end point",
+"use X as the final position", "the end point should be X"). An ending word used as a noun ("at
+the end near the box") asks none; neither does "stop at" (``stop_at``'s own words, read as the
+model reads them).
+
+Unless a step already ends there (``reach`` or ``append_segment`` of the object; ``stop_at`` of it
+for an end beside it), the steps written for the clause leave the code: a step on the object alone
+when no other clause names the object, and the object's entry in a step's list of objects; the
+end step is added after the last step that moves the path (speed steps after it stay after it).
+Code that is not made of skill calls alone is left alone. A review note says what changed and why.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from trajadapt.code_parse import (
+    SPEED_STEPS,
+    assigned_call,
+    call_of,
+    called_name,
+    detected_name,
+    in_place_of,
+    objects_of,
+    skill_program,
+)
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import longest_names, names_in
+from trajadapt.skills import SKILL_NAMES
+
+_NOT_A_NOUN = r"(?<!the\s)(?<!its\s)(?<!your\s)(?<!their\s)(?<!this\s)(?<!that\s)(?<!an\s)"
+_ENDING = (
+    rf"\b{_NOT_A_NOUN}(?:end(?:s|ed|ing)?|finish(?:es|ed|ing)?|terminat\w*|conclud\w*|arriv\w*"
+    r"|land(?:s|ed|ing)?|settl\w*|wrap(?:s|ped|ping)?\s+(?:it\s+|things\s+)?up|wind(?:s|ing)?\s+up|wound\s+up"
+    r"|come\s+to\s+rest|comes\s+to\s+rest|finish(?:es|ed|ing)?\s+up|end(?:s|ed|ing)?\s+up)"
+    r"(?:\s+(?:the\s+)?(?:path|route|trajectory|motion|run|flight|drive|journey|movement))?"
+    r"(?:\s+(?:exactly|right|directly|precisely|just|squarely|somewhere))?\s+"
+)
+AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
+"""An ending verb with a word that puts the end on the object: "finish at", "land on"."""
+BESIDE_PLACE = re.compile(
+    _ENDING + r"(?:beside|next\s+to|near|nearby|by|close\s+to|alongside|adjacent\s+to|against)\b", re.I
+)
+"""An ending verb with a word that puts the end beside the object: "wind up next to", "end beside"."""
+_END_NOUN = (
+    r"(?:new\s+)?(?:end\s*-?\s*point|end|final\s+(?:point|position|spot|location|waypoint|destination|stop)"
+    r"|finish(?:ing)?(?:\s+(?:point|line|spot))?|destination|goal|last\s+(?:point|waypoint|stop)"
+    r"|landing\s+(?:spot|point|place|site)|stopping\s+(?:point|place)|terminus)"
+)
+NAMED_AS_END = re.compile(
+    rf"\b(?:make|use|treat|have|set|take|let|choose|pick)\s+(?P<named>.+?)\s+(?:as\s+|be\s+|become\s+)?"
+    rf"(?:your|the|its|our|a)\s+{_END_NOUN}\b"
+    rf"|\b(?:your|the|its)\s+{_END_NOUN}\s+(?:is|should\s+be|will\s+be|must\s+be|becomes|being|=)\s+(?P<then>.+)",
+    re.I,
+)
+"""Words that make an object the end: "make the quill your end point", "the final position should be X"."""
+OPENING = re.compile(r"^\s*(?:(?:the|a|an|your|its|that|this)\s+)?", re.I)
+ALTERNATIVE = re.compile(r"\s*,?\s*(?:and|or|&|/)\s", re.I)
+"""A second object joined to the first ("at the lamp or the box"): no one place."""
+MOVES_THE_PATH = frozenset(SKILL_NAMES) - frozenset(SPEED_STEPS)
+
+
+@dataclass(frozen=True)
+class AskedEnd:
+    """An end the words ask: the clause, the object, and the step that ends the path there."""
+
+    clause: str
+    place: str
+    skill: str  # 'reach' (at the object) or 'stop_at' (where the path passes nearest it)
+
+
+def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
+    """The end place ``clause`` asks, if it asks one (see the module).
+
+    >>> asked_end("then wrap up at the red cup", ["cup", "red cup"]).skill
+    'reach'
+    >>> asked_end("wind up next to the chair", ["chair"]).skill
+    'stop_at'
+    >>> asked_end("slow down at the end near the box", ["box"]) is None
+    True
+    """
+    for pattern, skill in ((AT_PLACE, "reach"), (BESIDE_PLACE, "stop_at")):
+        found = pattern.search(clause)
+        place = _one_name(clause[found.end() :], names) if found else None
+        if place is not None:
+            return AskedEnd(clause, place, skill)
+    named = NAMED_AS_END.search(clause)
+    place = _one_name(named.group("named") or named.group("then"), names) if named else None
+    return None if place is None else AskedEnd(clause, place, "reach")
+
+
+def _one_name(text: str, names: list[str]) -> str | None:
+    """The scene object ``text`` opens with ("the red cup, then ..."); not a point made of objects."""
+    text = OPENING.sub("", text)
+    named = longest_names(names_in(text, names))
+    opening = [name for name in named if text.casefold().startswith(name.casefold())]
+    if len(opening) != 1 or (ALTERNATIVE.match(text[len(opening[0]) :]) and len(named) > 1):
+        return None
+    return opening[0]
+
+
+def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` ending at each place the words ask it to end at (see the module)."""
+    names = list(names)
+    lines = code.splitlines()
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if program is None:
+        return code, []
+    clauses = [clause for words in asked for clause in split_clauses(words, names)]
+    ends = [end for clause in clauses if (end := asked_end(clause, names)) is not None]
+    if len(ends) != 1 or any(_ends_there(line, ends[0]) for line in lines):
+        return code, []
+    end = ends[0]
+    others = " ".join(clause for clause in clauses if clause != end.clause)
+    notes: list[str] = []
+    if not names_in(others, [end.place]):
+        lines, notes = _without_steps_for(lines, end)
+    variable = program[1]
+    step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
+    at = 1 + max(
+        i for i, line in enumerate(lines) if called_name(line) in (*MOVES_THE_PATH, "get_trajectory")
+    )
+    how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
+    said = end.clause.strip()
+    notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
+    return "\n".join([*lines[:at], step, *lines[at:]]), notes
+
+
+def _ends_there(line: str, end: AskedEnd) -> bool:
+    """Whether ``line`` already ends the path at the asked place."""
+    enders = ("reach", "append_segment") if end.skill == "reach" else ("stop_at", "reach")
+    call = call_of(line, enders)
+    return call is not None and [name.casefold() for name in objects_of(call)] == [end.place.casefold()]
+
+
+def _without_steps_for(lines: list[str], end: AskedEnd) -> tuple[list[str], list[str]]:
+    """``lines`` less the steps on the end's object alone, and less the object in a step's list."""
+    kept: list[str] = []
+    notes: list[str] = []
+    for line in lines:
+        call = call_of(line, SKILL_NAMES)
+        named = _detected(call)
+        if call is None or end.place.casefold() not in named or called_name(line) in SPEED_STEPS:
+            kept.append(line)
+        elif len(named) == 1 or not isinstance(call.args[1], ast.List | ast.Tuple):
+            notes.append(f"left out `{line.strip()}`: the words ask the {end.place} as the path's end")
+        else:
+            kept.append(in_place_of(line, _less_object(line, end.place)))
+            change = f"`{line.strip()}` -> `{kept[-1].strip()}`"
+            notes.append(f"{change}: the {end.place} is the path's end, not a place it passes")
+    return kept, notes
+
+
+def _detected(call: ast.Call | None) -> list[str]:
+    """The (casefolded) names of every object the call detects, in any argument."""
+    if call is None:
+        return []
+    return [
+        name.casefold()
+        for node in ast.walk(call)
+        if isinstance(node, ast.expr) and (name := detected_name(node)) is not None
+    ]
+
+
+def _less_object(line: str, place: str) -> str:
+    """The statement of ``line`` with ``place`` taken out of its call's list of objects."""
+    parsed = assigned_call(line)
+    assert parsed is not None
+    tree, call, _ = parsed
+    points = call.args[1]
+    assert isinstance(points, ast.List | ast.Tuple)
+    left = [
+        item
+        for item, name in zip(points.elts, objects_of(call), strict=True)
+        if name.casefold() != place.casefold()
+    ]
+    call.args[1] = left[0] if len(left) == 1 else ast.List(left, ast.Load())
+    return ast.unparse(tree)

@@ -1,0 +1,117 @@
+"""An object the words ask the path to end at gets the step that ends it there (readers.end_places).
+
+Written from fresh-c (new instructions: "finish at X", "make X your end point", "wrap up beside X");
+the wordings here are none of any set's.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.end_places import asked_end, end_at_asked_places
+
+NAMES = ["lamp", "box", "chair", "red cup", "cup"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+def steps_after(words: str, *steps: str) -> list[str]:
+    return end_at_asked_places(program(*steps), [words], NAMES)[0].splitlines()[1:-1]
+
+
+@pytest.mark.parametrize(
+    ("clause", "place", "skill"),
+    [
+        ("conclude the run at the lamp", "lamp", "reach"),
+        ("land squarely on the box", "box", "reach"),
+        ("arrive at the red cup", "red cup", "reach"),
+        ("come to rest on the chair", "chair", "reach"),
+        ("have the lamp be your finishing point", "lamp", "reach"),
+        ("the final position should be the box", "box", "reach"),
+        ("finish up alongside the chair", "chair", "stop_at"),
+        ("wind up close to the lamp", "lamp", "stop_at"),
+    ],
+)
+def test_an_end_place_is_read_with_the_step_that_makes_it(clause: str, place: str, skill: str) -> None:
+    end = asked_end(clause, NAMES)
+    assert end is not None and (end.place, end.skill) == (place, skill)
+
+
+@pytest.mark.parametrize(
+    "clause",
+    [
+        "slow down at the end near the box",  # "end" a noun
+        "towards the finish by the lamp go slower",
+        "stop at the lamp",  # stop_at's own words, left to the model
+        "before arriving at the goal, loop round the box",  # the place is the goal, not the box
+        "end at the midpoint of the lamp and the box",  # a point made of two objects
+        "make the path end higher",
+        "finish at the lamp or the box",  # two objects
+    ],
+)
+def test_words_that_ask_no_end_at_one_object(clause: str) -> None:
+    assert asked_end(clause, NAMES) is None
+
+
+def test_a_missing_end_step_is_added_after_the_moves_and_before_the_speed_steps() -> None:
+    steps = steps_after(
+        "Bring it closer to the box and conclude at the lamp, slowing down towards the end",
+        "t = move_closer(t, detect_objects('box'))",
+        "t = speed_profile(t, 'decelerate', start=0.7)",
+    )
+    assert steps == [
+        "t = move_closer(t, detect_objects('box'))",
+        "t = reach(t, detect_objects('lamp'))",
+        "t = speed_profile(t, 'decelerate', start=0.7)",
+    ]
+
+
+def test_a_step_written_for_the_end_object_alone_gives_way() -> None:
+    steps = steps_after(
+        "Finish up alongside the chair.", "t = keep_side(t, 'right', detect_objects('chair'))"
+    )
+    assert steps == ["t = stop_at(t, detect_objects('chair'))"]
+
+
+def test_the_end_object_leaves_a_list_of_passes() -> None:
+    steps = steps_after(
+        "Fly above the box and then arrive at the lamp",
+        "t = pass_over(t, [detect_objects('box'), detect_objects('lamp')])",
+    )
+    assert steps == ["t = pass_over(t, detect_objects('box'))", "t = reach(t, detect_objects('lamp'))"]
+
+
+def test_a_step_of_the_object_another_clause_asks_stays() -> None:
+    steps = steps_after(
+        "Slow down near the lamp and land on the lamp",
+        "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        "t = move_closer(t, detect_objects('lamp'))",
+    )
+    assert steps == [
+        "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+        "t = move_closer(t, detect_objects('lamp'))",
+        "t = reach(t, detect_objects('lamp'))",
+    ]
+
+
+@pytest.mark.parametrize(
+    "step", ["t = reach(t, detect_objects('lamp'))", "t = append_segment(t, detect_objects('lamp'))"]
+)
+def test_a_step_that_ends_there_already_is_enough(step: str) -> None:
+    assert steps_after("terminate at the lamp", step) == [step]
+
+
+def test_code_beyond_the_skills_is_left_alone() -> None:
+    code = program("t[:, 0] += 0.1")
+    assert end_at_asked_places(code, ["finish at the lamp"], NAMES) == (code, [])
+
+
+def test_the_stage_notes_the_added_end() -> None:
+    code, notes = read_against_words(
+        program("t = shift(t, 'left')"), ["Go left and end up on the box."], NAMES
+    )
+    assert "t = reach(t, detect_objects('box'))" in code
+    assert any(note.reader == "end-places" for note in notes)

@@ -22,6 +22,8 @@ def program(*steps: str) -> str:
         # a speed said as a value
         ("hold the velocity steady at 0.25", "t = set_speed(t, 0.25)"),
         ("cruise at 0.4 speed", "t = set_speed(t, 0.4)"),
+        ("roll along at a steady 0.35", "t = set_speed(t, 0.35)"),
+        ("from beginning to end keep the speed at 0.2", "t = set_speed(t, 0.2)"),  # no part: all of it
         ("with the pace set to .3 around the crate", "t = set_speed(t, 0.3, near=detect_objects('crate'))"),
         # slower towards the goal or the end, decelerate, accelerate: profiles
         ("ease off as you come up to the destination", "t = speed_profile(t, 'decelerate', start=0.7)"),
@@ -52,6 +54,7 @@ def test_the_step_a_clause_asks(clause: str, step: str) -> None:
         "it is too slow near the kettle",  # a statement of how the path is now
         "keep the same pace",  # nothing to change
         "go left by 0.3",  # no pace
+        "fly at a constant 0.3 height",  # a level, not a pace
         "speed up near the kettle and then slow down",  # both ways in one clause
     ],
 )  # fmt: skip
@@ -132,5 +135,35 @@ def test_a_stated_speed_written_as_a_factor_becomes_the_speed_to_keep(
     ],
 )
 def test_factors_and_limits_stay_factors(words: str, written: str) -> None:
+    code, _ = add_asked_paces(program(written), [words], NAMES)
+    assert written in code
+
+
+@pytest.mark.parametrize(
+    ("words", "written", "kept", "why"),
+    [
+        ("glide at an even 0.3 throughout", "t = set_height(t, 0.3)", "t = set_speed(t, 0.3)", "not a height"),
+        ("maintain a uniform velocity of 0.6", "t = speed_profile(t, 'constant')", "t = set_speed(t, 0.6)",
+         "with its value"),
+        ("keep a fixed speed of 0.45", "t = set_speed(t, 0.2)", "t = set_speed(t, 0.45)", "with its value"),
+    ],
+)  # fmt: skip
+def test_a_stated_speed_taken_for_a_level_or_left_out_becomes_the_speed_to_keep(
+    words: str, written: str, kept: str, why: str
+) -> None:
+    code, notes = add_asked_paces(program(written), [words], NAMES)
+    assert code.splitlines()[1:-1] == [kept]
+    assert why in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "written"),
+    [
+        ("hover at a height of 0.3 at a steady 0.3", "t = set_height(t, 0.3)"),  # the words say a height
+        ("keep a fixed speed of 0.45", "t = speed_profile(t, 'constant', 0.45)"),  # the value kept already
+        ("hold a speed of 0.45 and crawl near the crate", "t = set_speed(t, 0.1, near=detect_objects('crate'))"),
+    ],
+)  # fmt: skip
+def test_a_level_the_words_say_or_a_value_kept_stays(words: str, written: str) -> None:
     code, _ = add_asked_paces(program(written), [words], NAMES)
     assert written in code

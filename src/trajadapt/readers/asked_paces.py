@@ -39,6 +39,7 @@ from trajadapt.code_parse import (
     SPEED_STEPS,
     after_last_step,
     call_of,
+    called_name,
     in_place_of,
     placed_near,
     skill_program,
@@ -64,10 +65,13 @@ _CONNECTIVES = (
 )
 STATED_SPEED = re.compile(
     rf"\b(?:speed|velocity|pace)\s+(?:{_CONNECTIVES}\s*){{0,4}}({NUMBER_TEXT})(?!\s*(?:%|times\b|x\b|per\s*cent))"
-    rf"|\bat\s+({NUMBER_TEXT})\s+(?:units?\s+)?(?:speed|velocity|pace)\b",
+    rf"|\bat\s+({NUMBER_TEXT})\s+(?:units?\s+)?(?:speed|velocity|pace)\b"
+    rf"|\b(?:at|with)\s+(?:a\s+|an\s+)?(?:constant|steady|uniform|even|fixed|unchanging|consistent)\s+"
+    rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|times\b|x\b|per\s*cent|\w*\s*(?:height|altitude|elevation|above|high|off)\b))",
     re.I,
 )
-"""A speed said as a value: "at a speed of 0.1", "speed constant at 0.1", "at 0.3 speed"."""
+"""A speed said as a value: "at a speed of 0.1", "speed constant at 0.1", "at 0.3 speed", "at a
+steady 0.4" (a steady number with no height word after it is a pace)."""
 LIMIT = re.compile(
     r"\b(?:than|at\s+most|at\s+least|max\w*|min\w*|cap\w*|limit\w*|exceed\w*|under|below|beyond"
     r"|up\s+to|no\s+more|by|factor)\b",
@@ -79,6 +83,10 @@ NOT_A_PACE = re.compile(
     r"\bquick\s+(?:one|question|thing|request|favou?r|note|tweak|change|fix|ask|edit|update|word)\b", re.I
 )
 """A pace word that asks nothing of the path: "quick one: go to the left", "a quick tweak"."""
+TAKEN_FOR = {"scale_speed": "not a factor", "set_height": "not a height"}
+"""What a stated speed was taken for, by the step that took it (the review note says it)."""
+HEIGHT_WORDS = re.compile(r"\b(?:height|altitude|elevation|high|low|above|below|up|down|level)\b", re.I)
+"""Words of a height: a number beside them may be a level."""
 NEGATED = re.compile(r"\b(?:not|never|no|don't|doesn't|without)\b|n't\b", re.I)
 TOWARDS_THE_END = re.compile(
     r"\b(?:towards?|near(?:ing)?|approach\w*|reach\w*|at|by)\s+(?:the\s+)?(?:end|finish)\b"
@@ -94,6 +102,12 @@ PARTS = (
     (re.compile(r"\b(?:the\s+)?(?:start|beginning)\b(?!\s+(?:position|point))", re.I), "start"),
 )
 """Parts of the path a clause names, and the ``part=`` word of the speed skills."""
+WHOLE_RUN = re.compile(
+    r"\b(?:from|between)\s+(?:the\s+)?(?:start|beginning|outset|takeoff)\s+(?:to|till|until|and)\s+"
+    r"(?:the\s+)?(?:finish|end|goal|landing)\b",
+    re.I,
+)
+""""From start to finish": the whole path, no part of it."""
 
 
 @dataclass(frozen=True)
@@ -121,8 +135,9 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
             pace = asked_pace(clause, names, variable)
             taken = _speed_taken_as_factor(lines, pace)
             if pace is not None and taken is not None:
+                why = TAKEN_FOR.get(called_name(lines[taken]) or "", "with its value")
                 notes.append(f"`{lines[taken].strip()}` -> `{pace.step}`: the words state the speed to keep "
-                             f"({clause.strip()!r}), not a factor")  # fmt: skip
+                             f"({clause.strip()!r}), {why}")  # fmt: skip
                 lines[taken] = in_place_of(lines[taken], pace.step)
                 continue
             if pace is None or _served(pace, places):
@@ -137,24 +152,53 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
 
 
 def _speed_taken_as_factor(lines: list[str], pace: AskedPace | None) -> int | None:
-    """The one ``scale_speed`` whose factor is the speed the clause states, else None.
+    """The one step that took the clause's stated speed for another quantity or left it out, else None.
 
-    "Slow to a speed of 0.2 near the chair" came back as ``scale_speed(t, 0.2, near=...)``: the
-    speed to keep, taken for a factor.
+    "Slow to a speed of 0.2 near the chair" came back as ``scale_speed(t, 0.2, near=...)`` (the
+    speed to keep, taken for a factor), "fly at a constant 0.5" as ``set_height(t, 0.5)`` (for a
+    level, where the clause says no height), "hold a steady speed of 0.3" as ``speed_profile(t,
+    'constant')`` or ``set_speed`` of another value in the same place (the value left out). None
+    when a speed step already keeps the stated value.
     """
     value = _stated_value(pace.clause) if pace is not None else None
-    if value is None:
+    if value is None or pace is None or any(_keeps(line, value) for line in lines):
         return None
-    taken = [
-        index
-        for index, line in enumerate(lines)
-        if (call := call_of(line, ("scale_speed",))) is not None
-        and len(call.args) > 1
-        and isinstance(call.args[1], ast.Constant)
-        and isinstance(call.args[1].value, int | float)
-        and abs(float(call.args[1].value) - value) < 1e-9
-    ]
+    taken = [index for index, line in enumerate(lines) if _took(line, value, pace)]
     return taken[0] if len(taken) == 1 else None
+
+
+def _number_arguments(call: ast.Call | None) -> list[float]:
+    """The plain numbers among the call's positional arguments after the trajectory."""
+    if call is None:
+        return []
+    return [
+        float(arg.value)
+        for arg in call.args[1:]
+        if isinstance(arg, ast.Constant)
+        and isinstance(arg.value, int | float)
+        and not isinstance(arg.value, bool)
+    ]
+
+
+def _keeps(line: str, value: float) -> bool:
+    """Whether ``line`` sets the speed to ``value`` (``set_speed`` or a profile with that value)."""
+    call = call_of(line, ("set_speed", "speed_profile"))
+    return any(abs(number - value) < 1e-9 for number in _number_arguments(call))
+
+
+def _took(line: str, value: float, pace: AskedPace) -> bool:
+    """Whether ``line`` took the stated speed for another quantity or left it out (see the caller)."""
+    name = called_name(line)
+    numbers = _number_arguments(call_of(line, (name,)) if name else None)
+    if name == "scale_speed" or (name == "set_height" and not HEIGHT_WORDS.search(pace.clause)):
+        return any(abs(number - value) < 1e-9 for number in numbers)
+    if name == "speed_profile":
+        return "'constant'" in line and _place(line) == _placed(pace)
+    return name == "set_speed" and _place(line) == _placed(pace)
+
+
+def _placed(pace: AskedPace) -> str | None:
+    return pace.near.casefold() if pace.near else None
 
 
 def asked_pace(clause: str, names: list[str], variable: str = "t") -> AskedPace | None:
@@ -185,7 +229,7 @@ def _stated_value(clause: str) -> float | None:
     stated = STATED_SPEED.search(clause)
     if stated is None or LIMIT.search(clause):
         return None
-    return float(stated.group(1) or stated.group(2))
+    return float(next(value for value in stated.groups() if value is not None))
 
 
 def _changed_pace(clause: str, t: str, where: str) -> str | None:
@@ -236,5 +280,6 @@ def _without_parts(clause: str) -> str:
 
 def _part_argument(clause: str) -> str:
     """``, part='<part>'`` for the one part of the path the clause names, else nothing."""
+    clause = WHOLE_RUN.sub(" ", clause)
     found = [part for pattern, part in PARTS if pattern.search(clause)]
     return f", part={found[0]!r}" if len(found) == 1 else ""

@@ -22,6 +22,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("raise the height 0.2", []),  # no "at", no "of": not read as a level
         ("don't climb above z = 0.4", [("stay_below", 0.4)]),  # a height named by its axis
         ("keep over a z of 0.15", [("stay_above", 0.15)]),
+        ("please never allow the gripper to sink under 0.7", [("stay_above", 0.7)]),  # negation words away
+        ("don't slow down, and stay under 0.4", [("stay_below", 0.4)]),  # a negation of another clause
+        ("hold at least 0.3 away from the vase, and stay over 0.1", [("stay_above", 0.1)]),  # a distance
+        ("keep a height of at least 0.3 from the floor", [("stay_above", 0.3)]),  # a height from the floor
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:
@@ -127,3 +131,11 @@ def test_a_height_no_step_keeps_is_added_last(words: str, added: str) -> None:
 def test_a_number_of_distance_adds_no_height(words: str) -> None:
     code = CODE.format(step="t = move_away(t, detect_objects('box'))")
     assert relate_heights(code, [words]) == (code, [])
+
+
+def test_a_limit_no_step_keeps_is_added_beside_a_clearance() -> None:
+    words = "Stay more than 0.2 away from the vase, and never let it climb above 0.6."
+    step = "t = move_away(t, detect_objects('vase'), 0.2)"
+    code, notes = relate_heights(CODE.format(step=step), [words])
+    assert code.splitlines()[1:-1] == [step, "t = stay_below(t, 0.6)"]
+    assert notes

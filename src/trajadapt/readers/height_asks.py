@@ -27,6 +27,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import DISTANCE_STEPS, after_last_step, assigned_call, in_place_of, skill_program
 from trajadapt.readers.clause_amounts import direction_amounts
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 from trajadapt.skills import SKILL_NAMES
 
@@ -53,40 +54,55 @@ SIDEWAYS = re.compile(r"\b(?:away|from|clearance|distance|apart)\b", re.I)
 GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
 
 
-NEGATION = re.compile(r"\b(?:not|never|no|n't|don't|nowhere)\b(?:\s+\w+){0,2}\s*$", re.I)
+NEGATION = re.compile(
+    r"(?:\b(?:not|never|no|nowhere)\b|n't\b)(?:\s+(?!(?:and|but|or|then|while|so)\b)[\w'-]+){0,6}\s*$", re.I
+)
+"""A negation earlier in the clause, with no joining word after it: "don't let the arm go below"."""
 FLIPPED = {"stay_below": "stay_above", "stay_above": "stay_below", "set_height": "set_height"}
 
 
 def asked_heights(words: str) -> list[tuple[str, float]]:
     """The (skill, height) pairs the words give ("at a height of 0.1" -> ('set_height', 0.1)).
 
-    A negation just before the relation turns it round ("never higher than 3" -> below 3).
+    A negation before the relation in its clause turns it round ("never higher than 3", "don't let
+    it drop below 0.5" -> above 0.5). A clause of a distance from something ("at least 0.15 from the
+    dog") gives no height unless it speaks of height itself.
     """
-    found: list[tuple[int, str, float]] = []
-    for skill, pattern in RELATIONS:
-        for match in pattern.finditer(words):
-            if any(start == match.start(1) for start, _, _ in found):
-                continue
-            negated = NEGATION.search(words[: match.start()]) is not None
-            found.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
-    return [(skill, height) for _, skill, height in sorted(found)]
+    return [(skill, height) for skill, height, _ in _clause_heights(words)]
+
+
+def _clause_heights(words: str) -> list[tuple[str, float, str]]:
+    """(skill, height, clause) for each height the words give, in their order."""
+    found: list[tuple[str, float, str]] = []
+    for clause in split_clauses(words):
+        if SIDEWAYS.search(clause) and not (VERTICAL.search(clause) or GROUND.search(clause)):
+            continue
+        at: list[tuple[int, str, float]] = []
+        for skill, pattern in RELATIONS:
+            for match in pattern.finditer(clause):
+                if any(start == match.start(1) for start, _, _ in at):
+                    continue
+                negated = NEGATION.search(clause[: match.start()]) is not None
+                at.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
+        found += [(skill, height, clause) for _, skill, height in sorted(at)]
+    return found
 
 
 def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one height step of the asked number given the asked relation, and a note."""
     words = " ".join(asked)
-    heights = asked_heights(words)
+    heights = _clause_heights(words)
     if not heights:
         return _height_as_change(code, words)
     if len(heights) != 1:
         return code, []
-    skill, height = heights[0]
+    skill, height, clause = heights[0]
     lines = code.splitlines()
     step = _one_height_step(lines, height, options=False)
     if step is None and not any(_height_step(x, options=True) for x in lines):
         step = _clearance_from_a_made_up_point(lines, height)
         if step is None:
-            return _added_height(lines, skill, height, words)
+            return _added_height(lines, skill, height, clause)
     if step is None or step[1] == skill:
         return code, []
     line, changed = lines[step[0]], f"t = {skill}(t, {height:g})"

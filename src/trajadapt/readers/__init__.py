@@ -22,6 +22,7 @@ from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_paces import add_asked_paces
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
+from trajadapt.readers.asked_shapes import add_asked_shapes
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.end_places import end_at_asked_places
 from trajadapt.readers.height_asks import relate_heights
@@ -85,6 +86,7 @@ READERS: tuple[Reader, ...] = (
            add_destination),
     Reader("asked-pauses", "a pause a clause asks for a count of timesteps (or a while) and no step makes",
            add_asked_pauses),
+    Reader("asked-shapes", "a weave or a loop a clause asks and no step makes", add_asked_shapes),
     Reader("unasked-directions", "a shift in a direction nobody said", replace_unasked_shifts),
     Reader("part-scope", "the part of the path a clause moves",
            lambda code, asked, _: scope_to_parts(code, asked)),

@@ -39,11 +39,12 @@ from trajadapt.readers.words import (
 )
 
 BREAKS = re.compile(
-    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also"
+    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and(?!\s+(?:forth|fro)\b)|then|but|also"
     r"|(?<!\ba )(?<!\blittle )(?<!\bshort )(?<!\bgood )while)\b",
     re.I,
 )
-"""Where one request may end and the next begin: punctuation (not a decimal point) and joining words."""
+"""Where one request may end and the next begin: punctuation (not a decimal point) and joining words
+("back and forth", "to and fro" join no requests)."""
 
 LEAD_INS = re.compile(
     r"^(?:after|once|when|whenever|if|while|as|before|upon|until|as soon as|at the end|at the start"

@@ -206,6 +206,10 @@ RIGHT_AS_STRESS = re.compile(
 the lamp" ("turn right at the lamp", "move right past it", "to the right of" stay the side)."""
 ENDING_UP = re.compile(r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?)\s+up\b", re.I)
 """Phrasal verbs of finishing: "end up 0.8 further front", "wrap up with a slower finish" ask no up."""
+TO_AND_FRO = re.compile(
+    r"\b(?:back\s+and\s+forth|forth\s+and\s+back|to\s+and\s+fro|side\s+to\s+side)\b", re.I
+)
+"""A swing both ways ("weave back and forth"): no one direction."""
 REVERSING = re.compile(
     r"\b(?:revers(?:e|es|ed|ing)|retreat(?:s|ed|ing)?)\b"
     r"(?!\s+(?:the|its|this|that|it|them|order|direction|course|sequence|waypoints?|points?)\b)",
@@ -252,7 +256,9 @@ def said_directions(words: str) -> set[str]:
     """
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
     text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
-    text = RIGHT_AS_STRESS.sub(" ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", text)))
+    text = RIGHT_AS_STRESS.sub(
+        " ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", TO_AND_FRO.sub(" ", text)))
+    )
     return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
 
 

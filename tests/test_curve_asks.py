@@ -5,9 +5,11 @@ Phrasings written for the reader; none of the benchmark sets has them.
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from trajadapt.readers.curve_asks import asked_curve, bend_as_asked
+from trajadapt.skills.shape import exaggerate_curve, smooth
 
 
 def program(*steps: str) -> str:
@@ -38,9 +40,31 @@ def test_smoothing_for_more_curve_becomes_the_exaggeration() -> None:
     assert "bend more" in notes[0]
 
 
-def test_exaggeration_for_a_straighter_path_becomes_smoothing() -> None:
-    code, _ = bend_as_asked(program("t = exaggerate_curve(t, 2.0)"), ["make it straighter"])
-    assert code == program("t = smooth(t)")
+@pytest.mark.parametrize("step", ["t = exaggerate_curve(t, 2.0)", "t = smooth(t)", "t = smooth(t, 0.9)"])
+def test_exaggeration_or_smoothing_for_a_straighter_path_becomes_the_drawing_in(step: str) -> None:
+    code, _ = bend_as_asked(program(step), ["make it straighter"])
+    assert code == program("t = exaggerate_curve(t, 0.5)")
+
+
+def test_smoothing_the_words_ask_too_stays_beside_a_straightening() -> None:
+    code = program("t = smooth(t)", "t = exaggerate_curve(t, 0.6)")
+    assert bend_as_asked(code, ["smooth it out and straighten it"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words", ["a less winding route please", "take a more direct way", "less meandering"]
+)
+def test_a_more_direct_way_asks_less_bend(words: str) -> None:
+    assert asked_curve(words) == "less"
+
+
+def test_the_asked_straightening_draws_a_wide_bend_in_where_smoothing_keeps_it() -> None:
+    s = np.linspace(0.0, 1.0, 40)
+    t = np.stack([s, np.sin(np.pi * s), np.zeros_like(s), np.ones_like(s)], axis=1)
+    chord_gap = lambda path: float(np.abs(path[:, 1]).mean())  # noqa: E731 (start and goal at y = 0)
+    straightened = exaggerate_curve(t.copy(), 0.5)
+    assert chord_gap(straightened) < 0.6 * chord_gap(t)
+    assert chord_gap(smooth(t.copy())) > 0.9 * chord_gap(t)
 
 
 def test_a_step_that_agrees_stays() -> None:
@@ -52,7 +76,7 @@ def test_a_step_that_agrees_stays() -> None:
     ("words", "step", "after"),
     [
         ("give the route a wider arc", "t = shift(t, 'up', 0.1)", "t = exaggerate_curve(t)"),
-        ("flatten out the curve", "t = shift(t, 'left')", "t = smooth(t)"),
+        ("flatten out the curve", "t = shift(t, 'left')", "t = exaggerate_curve(t, 0.5)"),
     ],
 )
 def test_a_shift_in_a_direction_nobody_said_stands_for_the_asked_bend(

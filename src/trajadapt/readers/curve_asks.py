@@ -5,8 +5,11 @@ which takes bends out; the skill that puts more in is ``exaggerate_curve``. The 
 curve when they put a word of more before a word of bending ("more curved", "increase the
 curvature", "exaggerate the bends", "a wider arc") or after it ("curve more", "bend it more"), and
 less when they ask it straight ("straighten", "flatten the curve", "less curved", "fewer bends").
-When they ask one and not the other, a step that does the other is replaced: ``smooth`` by
-``exaggerate_curve(t)`` for more, ``exaggerate_curve`` by ``smooth(t)`` for less ("smoothly" says
+Less also when they ask a more direct way ("more direct", "less winding", "less meandering").
+When they ask one and not the other, a step that does the other is replaced: ``smooth`` or a
+reducing ``exaggerate_curve`` by ``exaggerate_curve(t)`` for more; for less, an exaggerating one,
+and ``smooth`` unless the words ask smoothing too, by ``exaggerate_curve(t, 0.5)``, which draws the
+path towards its start-goal line (``smooth`` rounds off turns but keeps a wide bend; "smoothly" says
 how, and asks neither). When no step bends either way, the asked step takes the place of a
 whole-path ``shift`` in a direction the words never say ("make the trajectory curvier" came back as
 ``shift(t, 'right', 0.15)``), or is added to a program of no step at all. Code that is not made of
@@ -15,6 +18,7 @@ skill calls alone is left alone. A review note says what changed and why.
 
 from __future__ import annotations
 
+import ast
 import re
 from collections.abc import Iterable
 
@@ -38,13 +42,18 @@ MORE_CURVE = re.compile(
 )
 """Words that ask the path to bend more."""
 LESS_CURVE = re.compile(
-    rf"\b(?:straighten\w*|straighter|(?:make|keep)\w*\s+(?:\w+\s+){{0,2}}?straight|flatten\w*|less\s+{_BENDING}|fewer\s+{_BENDING}|(?:reduc|decreas)\w*\s+(?:the\s+)?{_BENDING}"
-    rf"|{_BENDING}\s+(?:\w+\s+){{0,2}}?less\b)",
+    rf"\b(?:straighten\w*|straighter|(?:make|keep)\w*\s+(?:\w+\s+){{0,2}}?straight|flatten\w*|less\s+{_BENDING}"
+    rf"|fewer\s+{_BENDING}|(?:reduc|decreas)\w*\s+(?:the\s+)?{_BENDING}|{_BENDING}\s+(?:\w+\s+){{0,2}}?less\b"
+    r"|\b(?:less|fewer)\s+(?:wind\w*|meander\w*|twist\w*|curvy|bendy|loopy|wiggl\w*|detour\w*)|\bmore\s+direct\b)",
     re.I,
 )
 """Words that ask the path to bend less."""
-OPPOSITE = {"more": ("smooth", "exaggerate_curve(t)"), "less": ("exaggerate_curve", "smooth(t)")}
-"""For each ask, the step that does the other (replaced) and the step that does it."""
+ASKED_STEP = {"more": "exaggerate_curve(t)", "less": "exaggerate_curve(t, 0.5)"}
+"""For each ask, the step that makes it: less bend is the path drawn halfway towards its start-goal
+line (``smooth`` only rounds off turns and jitter: a path that bends wide keeps its bend), more is
+the path pushed away from it."""
+SMOOTHING = re.compile(r"\bsmooth\w*|\bjitter\w*|\bjerk\w*", re.I)
+"""Words that ask smoothing too: a ``smooth`` step stays beside a straightening."""
 
 
 def asked_curve(words: str) -> str | None:
@@ -61,17 +70,37 @@ def bend_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     ask = asked_curve(words)
     if program is None or ask is None:
         return code, []
-    wrong, right = OPPOSITE[ask]
     variable = program[1]
-    step = f"{variable} = {right.replace('(t', f'({variable}', 1)}"
+    step = f"{variable} = {ASKED_STEP[ask].replace('(t', f'({variable}', 1)}"
     notes: list[str] = []
     for index, line in enumerate(lines):
-        if called_name(line) == wrong:
+        if _bends_the_other_way(line, ask, words):
             notes.append(f"`{line.strip()}` -> `{step}`: the words ask the path to bend {ask}")
             lines[index] = in_place_of(line, step)
-    if not notes and not any(called_name(line) == called_name(step) for line in lines):
+    if not notes and not any(
+        called_name(line) == called_name(step) and not _bends_the_other_way(line, ask, words)
+        for line in lines
+    ):
         _bend_where_none_does(lines, notes, step, ask, words)
     return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def _bends_the_other_way(line: str, ask: str, words: str) -> bool:
+    """Whether ``line`` bends the path against the ask (more or less bend).
+
+    A smoothing is against more, and against less unless the words ask smoothing too; a curve
+    exaggerated (factor above 1) is against less, a curve reduced against more.
+    """
+    name = called_name(line)
+    if name == "smooth":
+        return ask == "more" or not SMOOTHING.search(words)
+    if name != "exaggerate_curve":
+        return False
+    call = call_of(line, ("exaggerate_curve",))
+    factor = call.args[1] if call is not None and len(call.args) > 1 else None
+    given = factor.value if isinstance(factor, ast.Constant) else None
+    value = float(given) if isinstance(given, int | float) and not isinstance(given, bool) else 1.5
+    return (value < 1.0) == (ask == "more")
 
 
 def _bend_where_none_does(lines: list[str], notes: list[str], step: str, ask: str, words: str) -> None:

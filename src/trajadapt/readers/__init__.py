@@ -43,6 +43,7 @@ from trajadapt.readers.unasked_directions import replace_unasked_shifts
 from trajadapt.readers.unasked_steps import leave_out_unasked
 from trajadapt.readers.unnamed_objects import leave_out_unnamed
 from trajadapt.readers.unstated_amounts import replace_unstated_amounts
+from trajadapt.readers.waypoint_counts import count_as_asked
 
 ReadFunction = Callable[[str, Sequence[str], Sequence[str]], tuple[str, list[str]]]
 
@@ -103,6 +104,8 @@ READERS: tuple[Reader, ...] = (
            leave_out_moves_of_paced_places),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
            profile_paces),
+    Reader("waypoint-counts", "a count of waypoints the words give, and the resample that makes it",
+           lambda code, asked, _: count_as_asked(code, asked)),
     Reader("kept-ends", "an end of the path the words keep where it is, and steps that move it",
            lambda code, asked, _: keep_kept_ends(code, asked)),
 )  # fmt: skip

@@ -104,6 +104,10 @@ def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster
         ("bring the route in nice and tight to the vase", "closer"),
         ("finish up directly left of the vase", "closer"),
         ("park immediately in front of the vase", "closer"),
+        # a noun of room with a word of plenty (session 28; fresh-b's "a wide berth")
+        ("leave the vase plenty of room", "away"),
+        ("keep a safe distance from the vase", "away"),
+        ("pass the vase with a generous margin", "away"),
     ],
 )
 def test_closeness_is_read_alike_everywhere(words: str, relation: str) -> None:

@@ -120,13 +120,15 @@ CLOSER = re.compile(
 )
 AWAY = re.compile(
     r"\b(?:away|further|farther|clear\s+of"
-    r"|(?:greater|larger|bigger|more|increased?|wider|extra)"
+    r"|(?:greater|larger|bigger|more|increased?|wider|extra|wide|big|large|generous|ample|healthy|decent"
+    r"|safe|respectful|comfortable|plenty\s+of|lots\s+of|a\s+lot\s+of)"
     r" (?:distance|berth|space|room|gap|clearance|margin))\b"
     rf"|\b(?:increas|widen|grow|grew|enlarg|expand|extend|doubl|rais|boost)\w*\s+{GAP_NOUN}",
     re.I,
 )
 """What asks to come closer to an object, and to keep further from it ("tighter to", "in tight",
-"just right of", "right next to", "steer clear of", "a wider margin", a verb of less or more before
+"just right of", "right next to", "steer clear of", "a wider margin", "a wide berth", "plenty of
+room", a verb of less or more before
 a distance: "reduce the gap", "widen your clearance"; "avoid" asks a clearance, which the readers
 leave to ``avoid``; only the effect's flags count it as away)."""
 

@@ -167,3 +167,26 @@ def test_a_stated_speed_taken_for_a_level_or_left_out_becomes_the_speed_to_keep(
 def test_a_level_the_words_say_or_a_value_kept_stays(words: str, written: str) -> None:
     code, _ = add_asked_paces(program(written), [words], NAMES)
     assert written in code
+
+
+def test_a_pace_placed_at_the_other_clause_s_object_moves_to_its_own() -> None:
+    code, notes = add_asked_paces(
+        program("t = scale_speed(t, 0.65, near=detect_objects('crate'))"),
+        ["take it slower around the kettle, and stay left of the crate"],
+        NAMES,
+    )
+    assert code.splitlines()[1:-1] == ["t = scale_speed(t, 0.65, near=detect_objects('kettle'))"]
+    assert "no pace near the crate" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "come up to the crate and slow down near it",  # the pace names no object: it may be the crate
+        "slow down near the crate and stay left of the crate",  # a clause asks a pace near it
+    ],
+)
+def test_a_pace_step_the_words_may_place_there_stays(words: str) -> None:
+    step = "t = scale_speed(t, 0.65, near=detect_objects('crate'))"
+    code, _ = add_asked_paces(program(step), [words], NAMES)
+    assert step in code

@@ -45,6 +45,7 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.object_words import object_asks
 from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import (
@@ -53,6 +54,7 @@ from trajadapt.readers.words import (
     NUMBER_TEXT,
     PLACE_WORDS,
     SLOWER,
+    asks_pace,
     longest_names,
     names_in,
 )
@@ -83,6 +85,8 @@ NOT_A_PACE = re.compile(
     r"\bquick\s+(?:one|question|thing|request|favou?r|note|tweak|change|fix|ask|edit|update|word)\b", re.I
 )
 """A pace word that asks nothing of the path: "quick one: go to the left", "a quick tweak"."""
+MOVES = ("side", "closer", "away")
+"""What a clause may ask of an object besides a pace: a step placed at it for a pace answers no clause."""
 TAKEN_FOR = {"scale_speed": "not a factor", "set_height": "not a height"}
 """What a stated speed was taken for, by the step that took it (the review note says it)."""
 HEIGHT_WORDS = re.compile(r"\b(?:height|altitude|elevation|high|low|above|below|up|down|level)\b", re.I)
@@ -127,9 +131,10 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     if program is None:
         return code, []
     variable = program[1]
+    asked = list(asked)
+    lines, notes = _without_crossed_places(lines, asked, names)
     places = [_place(line) for line in lines if call_of(line, SPEED_STEPS) is not None]
     added: list[str] = []
-    notes: list[str] = []
     for words in asked:
         for clause in split_clauses(words, names):
             pace = asked_pace(clause, names, variable)
@@ -149,6 +154,41 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
         return code, []
     end = after_last_step(lines, SKILL_NAMES)
     return "\n".join([*lines[:end], *added, *lines[end:]]), notes
+
+
+def _without_crossed_places(
+    lines: list[str], asked: list[str], names: list[str]
+) -> tuple[list[str], list[str]]:
+    """``lines`` less each speed step placed at an object the words ask something else of, and a note each.
+
+    "Ease off the speed around the piano, and stay on the back side of the chair" came back with
+    ``scale_speed(t, 0.65, near=chair)``: the pace went to the other clause's object. A step placed
+    at an object goes when the clauses ask a move of that object (a side, closer, further:
+    ``object_asks``), none of the clauses naming it asks a pace, and every clause that asks a pace
+    names another object ("slow down near it" keeps a step at the object named before).
+    """
+    clauses = [clause for words in asked for clause in split_clauses(words, names)]
+    pacing = [clause for clause in clauses if asks_pace(clause)]
+    asks = object_asks(" ".join(asked), names)
+    moves = {name.casefold() for name, ask in asks.items() if ask.relation in MOVES}
+    kept: list[str] = []
+    notes: list[str] = []
+    for line in lines:
+        near = placed_near(call_of(line, SPEED_STEPS))
+        naming = [clause for clause in clauses if near and names_in(clause, [near])]
+        crossed = (
+            near is not None
+            and near.casefold() in moves
+            and pacing
+            and not any(clause in pacing for clause in naming)
+            and all(longest_names(names_in(clause, names)) for clause in pacing)
+        )
+        if crossed:
+            notes.append(f"left out `{line.strip()}`: the words ask no pace near the {near} "
+                         f"({' / '.join(repr(c.strip()) for c in pacing)} place it elsewhere)")  # fmt: skip
+            continue
+        kept.append(line)
+    return kept, notes
 
 
 def _speed_taken_as_factor(lines: list[str], pace: AskedPace | None) -> int | None:

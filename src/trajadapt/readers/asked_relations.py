@@ -1,4 +1,4 @@
-"""A closer or further a clause asks of an object, and no step that moves the path relative to it.
+"""A closer, further or side a clause asks of an object, and no step that moves the path relative to it.
 
 The object twin of ``asked_directions`` (issue #24 item 1, "every clause gets its step"): a small
 model drops a clause of a compound instruction, and the request for an object is lost with it: "cut
@@ -9,7 +9,8 @@ one relation of it), when no line of the code but a speed step names the object 
 ``near=`` says where the speed changes, not where the path goes), the reader adds
 ``move_closer`` / ``move_away`` with the clause's vague word as the last step (``avoid`` with the
 clearance when the clause states a least distance: "stay at least 0.2 from it"; ``pass_through``
-when the clause asks to pass close by it: "swing by the lamp", "fly close past the box"); a clause that places
+when the clause asks to pass close by it: "swing by the lamp", "fly close past the box"; ``keep_side``
+when it asks to stay on one side of it: "stay on the back side of the chair"); a clause that places
 its request at a part or an end of the path ("after reaching the goal, approach the lamp") asks
 something else and is left to the model. A step that names
 the object in any other way (``avoid``, ``reach``, ``pass_through``, ``circle_around``, a
@@ -28,7 +29,7 @@ from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.words import MINIMUM_DISTANCE, PART_OR_END, intensity_word
 from trajadapt.skills import SKILL_NAMES
 
-STEP_OF = {"closer": "move_closer", "away": "move_away", "by": "pass_through"}
+STEP_OF = {"closer": "move_closer", "away": "move_away", "by": "pass_through", "side": "keep_side"}
 """The step that answers each relation this reader adds."""
 
 
@@ -51,6 +52,8 @@ def add_asked_relations(code: str, asked: Iterable[str], names: Iterable[str]) -
         step = f"{variable} = {STEP_OF[ask.relation]}({variable}, detect_objects({ask.name!r}){amount})"
         if least is not None and ask.relation == "away":  # "at least 0.2 from it": a clearance to keep
             step = f"{variable} = avoid({variable}, detect_objects({ask.name!r}), {least.group(1)})"
+        if ask.relation == "side":  # "stay on the back side of the chair"
+            step = f"{variable} = keep_side({variable}, {ask.side!r}, detect_objects({ask.name!r}))"
         added.append(step)
         notes.append(
             f"added `{step}`: the words ask {asked_words(ask)} {ask.name} ({ask.clause.strip()!r}) "

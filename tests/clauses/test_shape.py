@@ -94,10 +94,10 @@ def test_a_second_answer_no_better_leaves_no_trace_but_the_note(sandbox) -> None
 
 def test_a_step_the_readers_leave_out_counts_as_missing(sandbox) -> None:
     unasked = "t = scale_speed(t, 2.0, near=detect_objects('box'))"  # no speed word in the words
-    spiral = "t = spiral(t)"
-    backend = ScriptedBackend(answers=[answer(unasked), answer(spiral)])
-    session = AdaptationSession(case("finish with a spiral"), backend, sandbox, SessionSettings())
-    assert session.draft().code.strip() == program(spiral) and len(backend.requests) == 2
+    noise = "t = add_noise(t)"  # no reader adds this step: only a second answer can
+    backend = ScriptedBackend(answers=[answer(unasked), answer(noise)])
+    session = AdaptationSession(case("finish by adding some noise"), backend, sandbox, SessionSettings())
+    assert session.draft().code.strip() == program(noise) and len(backend.requests) == 2
 
 
 def test_a_direction_left_without_its_step_gets_it_back_without_asking_again(sandbox) -> None:

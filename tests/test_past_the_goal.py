@@ -117,3 +117,26 @@ def test_a_pause_at_the_place_stays_and_comes_after_the_segment() -> None:
         "t = wait(t, detect_objects('Vase'), 5)",
         "t = smooth(t)",
     )
+
+
+@pytest.mark.parametrize(
+    ("words", "written", "directed"),
+    [
+        ("once you are at the end point, push on 0.3 further up", "t = extend(t, 0.3)",
+         "t = extend(t, 0.3, direction='up')"),
+        ("after the goal, carry on backwards a little", "t = extend(t, distance='a little')",
+         "t = extend(t, distance='a little', direction='back')"),
+    ],
+)  # fmt: skip
+def test_an_undirected_extension_gets_the_direction_said_after_the_goal(
+    words: str, written: str, directed: str
+) -> None:
+    code, notes = read_against_words(program(written), [words], [])
+    assert code.splitlines()[1:-1] == [directed]
+    assert any(note.reader == "past-the-goal" for note in notes)
+
+
+@pytest.mark.parametrize("written", ["t = extend(t, 0.3, 'left')", "t = extend(t, direction='left')"])
+def test_an_extension_with_its_own_direction_is_left_to_the_flags(written: str) -> None:
+    code, _ = read_against_words(program(written), ["after the goal, carry on 0.3 to the right"], [])
+    assert written in code

@@ -258,7 +258,8 @@ def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:
 
 SETTING_WORDS = frozenset(
     "goal start end position destination target point path trajectory arriving arrive arrives arrival "
-    "reach reaches reached get gets got hit hits at done finished there middle halfway".split()
+    "reach reaches reached get gets got hit hits at done finished there middle halfway current present "
+    "original usual old existing planned final".split()
 )
 """Words a lead-in may have besides its opening word and object names."""
 

@@ -37,10 +37,12 @@ from dataclasses import dataclass
 from trajadapt.code_parse import (
     SPEED_STEPS,
     after_last_step,
+    assigned_call,
     call_of,
     called_name,
     detected_name,
     direction_argument,
+    in_place_of,
     on_object,
     skill_program,
 )
@@ -112,6 +114,8 @@ def add_destination(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     names = list(names)
     asked_after = after_goal(words, names)
     place = asked_after.destination
+    if program is not None and place is None:
+        return _directed_extension(lines, asked_after.clauses)
     if program is None or place is None or any(_appends_to(line, place) for line in lines):
         return code, []
     before = _before_goal(words, names, asked_after.clauses)
@@ -129,6 +133,32 @@ def add_destination(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     ]
     notes.append(f"added `{step}`: {said} go(es) on from the goal to the {place}")
     return "\n".join([*kept[:at], step, *kept[at:], *lines[end:]]), notes
+
+
+def _directed_extension(lines: list[str], after: tuple[str, ...]) -> tuple[str, list[str]]:
+    """The lines with the one direction the after-goal clauses say given to the one ``extend`` of none.
+
+    "After reaching the end point, keep flying forward another 0.5" came back as ``extend(t, 0.5)``,
+    which goes on along the final heading, not forward.
+    """
+    directions = said_directions(" ".join(after))
+    extends = [(i, call) for i, line in enumerate(lines) if (call := call_of(line, ("extend",))) is not None]
+    if len(directions) != 1 or len(extends) != 1 or _directed(extends[0][1]):
+        return "\n".join(lines), []
+    index, direction = extends[0][0], directions.pop()
+    parsed = assigned_call(lines[index])
+    assert parsed is not None
+    tree, found, _ = parsed
+    found.keywords.append(ast.keyword("direction", ast.Constant(direction)))
+    before, after_line = lines[index].strip(), ast.unparse(tree)
+    lines[index] = in_place_of(lines[index], after_line)
+    said = ", ".join(repr(clause.strip()) for clause in after)
+    return "\n".join(lines), [f"`{before}` -> `{after_line}`: {said} go(es) on {direction} past the goal"]
+
+
+def _directed(call: ast.Call) -> bool:
+    """Whether an ``extend`` call gives a direction (third argument or ``direction=``)."""
+    return len(call.args) > 2 or any(keyword.arg == "direction" for keyword in call.keywords)
 
 
 def _only_arrives(clause: str) -> bool:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import asks_distance, asks_pace, asks_visit
+from trajadapt.readers.words import PAST_THE_GOAL, asks_distance, asks_pace, asks_visit
 
 
 @dataclass(frozen=True)
@@ -91,6 +91,7 @@ TOPICS = (
             "finally",
             "next",
         ),
+        also=lambda words: PAST_THE_GOAL.search(words) is not None,  # "once you are at the end point, ..."
     ),  # fmt: skip
     Topic(
         "a pause",

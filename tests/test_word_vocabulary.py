@@ -73,6 +73,12 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("taking it easy around the crate", False),
         ("crawling by the crate", False),
         ("drop your speed at the end", False),
+        # pace verbs (session 28; fresh-c's "begin gently", fresh-d's "creep past")
+        ("tiptoe around the crate", False),
+        ("crept along the shelf", False),
+        ("handle the last bit gently", False),
+        ("zoom through the middle", True),
+        ("rush the first half", True),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:

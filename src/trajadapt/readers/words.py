@@ -94,20 +94,21 @@ def asked_kinds(words: str) -> frozenset[str]:
 
 
 FASTER = re.compile(
-    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up"
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
+    r"|sprint\w*|rush\w*|hustl\w*"
     rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{SPEED_NOUN}"
     rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN})",
     re.I,
 )
 SLOWER = re.compile(
-    r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*"
+    r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*|creep\w*|crept|tiptoe\w*|dawdl\w*|gentl\w*"
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{SPEED_NOUN})",
     re.I,
 )
-"""What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl" are
-slower), and a verb or adjective of more or less before a speed ("reduce your speed", "raise the
-pace", "at a lower speed")."""
+"""What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",
+"gently" are slower; "zip", "zoom", "rush" faster), and a verb or adjective of more or less before
+a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
 
 GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(

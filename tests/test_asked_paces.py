@@ -190,3 +190,30 @@ def test_a_pace_step_the_words_may_place_there_stays(words: str) -> None:
     step = "t = scale_speed(t, 0.65, near=detect_objects('crate'))"
     code, _ = add_asked_paces(program(step), [words], NAMES)
     assert step in code
+
+
+@pytest.mark.parametrize(
+    ("words", "steps", "added"),
+    [
+        ("zoom along through the middle part", ("t = speed_profile(t, 'accelerate', start=0.7)",),
+         "t = scale_speed(t, 1.4, part='middle')"),  # a profile changes the end, not the middle
+        ("take the first half at a crawl", ("t = scale_speed(t, 0.8, part='second half')",),
+         "t = scale_speed(t, 0.65, part='first half')"),  # a step on another part
+    ],
+)  # fmt: skip
+def test_a_pace_of_a_part_needs_a_step_on_that_part(words: str, steps: tuple[str, ...], added: str) -> None:
+    code, _ = add_asked_paces(program(*steps), [words], NAMES)
+    assert code == program(*steps, added)
+
+
+@pytest.mark.parametrize(
+    "steps",
+    [
+        ("t = scale_speed(t, 1.4)",),  # all of it: the speed-scope reader places it
+        ("t = scale_speed(t, 1.4, near=detect_objects('goal'))",),  # at an end: placed by speed-scope too
+        ("t = speed_profile(t, 'accelerate', start=0.5)",),  # a profile serves the second half
+    ],
+)
+def test_a_pace_of_the_second_half_a_step_may_make_is_left_alone(steps: tuple[str, ...]) -> None:
+    code = program(*steps)
+    assert add_asked_paces(code, ["hurry in the second half"], NAMES) == (code, [])

@@ -58,6 +58,7 @@ from trajadapt.readers.words import (
     longest_names,
     names_in,
 )
+from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.skills import SKILL_NAMES
 from trajadapt.skills.core import NUMBER
 
@@ -85,6 +86,11 @@ NOT_A_PACE = re.compile(
     r"\bquick\s+(?:one|question|thing|request|favou?r|note|tweak|change|fix|ask|edit|update|word)\b", re.I
 )
 """A pace word that asks nothing of the path: "quick one: go to the left", "a quick tweak"."""
+PART_ARGUMENT = re.compile(r"\bpart\s*=\s*['\"]([^'\"]+)['\"]")
+PROFILE = "profile"
+END_PLACES = tuple(name.casefold() for name in (*GOAL_NAMES, *START_NAMES))
+"""A speed step placed at an end of the path, not at a scene object."""
+"""Where a speed profile acts, for ``_served``: along the path towards its end."""
 MOVES = ("side", "closer", "away")
 """What a clause may ask of an object besides a pace: a step placed at it for a pace answers no clause."""
 TAKEN_FOR = {"scale_speed": "not a factor", "set_height": "not a height"}
@@ -233,8 +239,8 @@ def _took(line: str, value: float, pace: AskedPace) -> bool:
     if name == "scale_speed" or (name == "set_height" and not HEIGHT_WORDS.search(pace.clause)):
         return any(abs(number - value) < 1e-9 for number in numbers)
     if name == "speed_profile":
-        return "'constant'" in line and _place(line) == _placed(pace)
-    return name == "set_speed" and _place(line) == _placed(pace)
+        return "'constant'" in line and _object_place(line) == _placed(pace)
+    return name == "set_speed" and _object_place(line) == _placed(pace)
 
 
 def _placed(pace: AskedPace) -> str | None:
@@ -291,16 +297,38 @@ def _changed_pace(clause: str, t: str, where: str) -> str | None:
 
 
 def _served(pace: AskedPace, places: list[str | None]) -> bool:
-    """Whether a speed step makes ``pace`` already: any for no object, else one not placed at another."""
-    if pace.near is None:
+    """Whether a speed step makes ``pace`` already (see the module).
+
+    For no object and no part, any speed step; for a part of the path ("hurry through the middle"),
+    a step on that part, on all of it or at an end (the speed-scope reader places those), not a profile, which
+    changes the speed towards the end (it serves the second half); for an object, a step not placed
+    at another object.
+    """
+    part = PART_ARGUMENT.search(pace.step)
+    if pace.near is not None:
+        near = pace.near.casefold()
+        return any(place in (None, PROFILE, near) or place.startswith("part:") for place in places)
+    if part is None:
         return bool(places)
-    return any(place in (None, pace.near.casefold()) for place in places)
+    own = any(place in (None, f"part:{part.group(1)}", *END_PLACES) for place in places)
+    return own or (part.group(1) == "second half" and PROFILE in places)
+
+
+def _object_place(line: str) -> str | None:
+    """The object a speed step is placed at (casefolded), None for none."""
+    near = placed_near(call_of(line, SPEED_STEPS))
+    return None if near is None else near.casefold()
 
 
 def _place(line: str) -> str | None:
-    """The object a speed step is placed at (casefolded), None for none (the whole path or a part)."""
-    near = placed_near(call_of(line, SPEED_STEPS))
-    return None if near is None else near.casefold()
+    """Where a speed step acts: its object (casefolded), ``part:<part>``, ``PROFILE``, or None (all of it)."""
+    near = _object_place(line)
+    if near is not None:
+        return near
+    part = PART_ARGUMENT.search(line)
+    if part is not None:
+        return f"part:{part.group(1)}"
+    return PROFILE if called_name(line) == "speed_profile" else None
 
 
 def _placed_object(clause: str, names: list[str]) -> str | None:

@@ -26,6 +26,11 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("don't slow down, and stay under 0.4", [("stay_below", 0.4)]),  # a negation of another clause
         ("hold at least 0.3 away from the vase, and stay over 0.1", [("stay_above", 0.1)]),  # a distance
         ("keep a height of at least 0.3 from the floor", [("stay_above", 0.3)]),  # a height from the floor
+        ("cap its elevation at 0.9", [("stay_below", 0.9)]),  # a limit said as a cap
+        ("respect a ceiling of 2.5", [("stay_below", 2.5)]),
+        ("a minimum height of 0.25 throughout", [("stay_above", 0.25)]),
+        ("allow a maximum of 3 loops", []),  # a maximum of something else
+        ("cap the speed at 2", []),
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:

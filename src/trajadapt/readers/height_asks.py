@@ -32,9 +32,15 @@ from trajadapt.readers.words import NUMBER_TEXT
 from trajadapt.skills import SKILL_NAMES
 
 NUMBER = rf"({NUMBER_TEXT})"
-BELOW = r"below|under(?:neath)?|lower than|at most"
-ABOVE = r"above|over|higher than|more than|at least|exceed\w*"
 LEVEL = r"(?:height|altitude|elevation)"
+BELOW = (
+    rf"below|under(?:neath)?|lower than|at most|cap\w*(?:\s+(?:the\s+|its\s+|your\s+)?{LEVEL})?\s+at"
+    rf"|ceiling(?:\s+{LEVEL})?\s+(?:of|at|is)|(?:max(?:imum)?|upper\s+limit)\s+{LEVEL}\s+(?:of|at|is)"
+)
+_MINIMUM = rf"(?:min(?:imum)?|lower\s+limit)\s+{LEVEL}\s+(?:of|at|is)"
+ABOVE = rf"above|over|higher than|more than|at least|exceed\w*|{_MINIMUM}"
+"""Words of a limit before a height: "below 0.3", "cap the altitude at 1.5", "a ceiling of 2"; "above",
+"a minimum altitude of 0.5"."""
 AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover|stay|keep|cruise|move)\w* at"
 NAMED = r"(?:a height of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
 """How a height may be named before its number: "a height of 0.2", "z = 0.2", "a z of 0.2"."""

@@ -69,3 +69,32 @@ def test_the_asked_resample_already_written_stays() -> None:
 def test_code_beyond_the_skills_is_left_alone() -> None:
     code = program("t = t[::2]")
     assert count_as_asked(code, ["halve the waypoints"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "added"),
+    [
+        ("go via fewer way points", "t = resample(t, len(t) // 2)"),
+        ("cut down the number of points", "t = resample(t, len(t) // 2)"),
+        ("thin it out a bit", "t = resample(t, len(t) // 2)"),
+        ("give it more waypoints", "t = resample(t, 2 * len(t))"),
+        ("make the path denser", "t = resample(t, 2 * len(t))"),
+    ],
+)
+def test_a_way_without_a_count_halves_or_doubles_it(words: str, added: str) -> None:
+    code, notes = count_as_asked(program("t = smooth(t)"), [words])
+    assert code == program("t = smooth(t)", added)
+    assert notes
+
+
+@pytest.mark.parametrize(
+    "words", ["I'm thinking of going left", "stay more than 5 points away", "fewer points and more points"]
+)
+def test_no_way_or_both_ways_add_nothing(words: str) -> None:
+    code = program("t = smooth(t)")
+    assert count_as_asked(code, [words]) == (code, [])
+
+
+def test_a_resample_the_model_wrote_for_a_way_stays() -> None:
+    code = program("t = resample(t, 30)")
+    assert count_as_asked(code, ["use fewer waypoints"]) == (code, [])

@@ -11,7 +11,9 @@
 
 A count of a part of the path ("the first 10 waypoints", "every 5 points") gives none. When the
 words give exactly one count, the one ``resample`` step of another count takes it, or, with no
-``resample`` step, one is added as the last step. Code that is not made of skill calls alone is left
+``resample`` step, one is added as the last step. Words that only say which way ("use fewer points",
+"reduce the number of waypoints", "thin it out", "more waypoints") get half or twice the count, when
+no ``resample`` step is there. Code that is not made of skill calls alone is left
 alone. A review note says what changed and why.
 """
 
@@ -47,6 +49,13 @@ IN_ALL = re.compile(
 )
 """A count in all: "with 60 waypoints", "resample to 25 points", "use 30 waypoints"."""
 LESS = ("fewer", "less", "remove", "drop", "delete", "cut")
+UNCOUNTED = re.compile(
+    rf"\b(?:(fewer|less|more|extra|additional)\s+(?:\w+\s+)?{_POINTS}"
+    rf"|(reduc|decreas|lower|cut|increas|rais)\w*\s+(?:down\s+)?(?:the\s+)?(?:number|count)\s+of\s+{_POINTS}"
+    r"|(thin)(?:s|ned|ning)?\s+(?:it\s+|them\s+|the\s+\w+\s+)?out\b|(sparser|denser))",
+    re.I,
+)
+"""A count said by its way alone: "use fewer points", "reduce the number of waypoints", "thin it out"."""
 
 
 def asked_count(words: str) -> str | None:
@@ -85,11 +94,13 @@ def count_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
     count = asked_count(" ".join(asked))
-    if program is None or count is None:
+    if program is None:
         return code, []
+    written = [i for i, line in enumerate(lines) if call_of(line, ("resample",)) is not None]
+    if count is None:
+        return _uncounted(lines, asked, program[1]) if not written else (code, [])
     variable = program[1]
     step = f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
-    written = [i for i, line in enumerate(lines) if call_of(line, ("resample",)) is not None]
     if len(written) > 1 or any(_same(lines[i], step) for i in written):
         return code, []
     if written:
@@ -98,6 +109,27 @@ def count_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         return "\n".join(lines), [f"`{before}` -> `{step}`: the words give that count of waypoints"]
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     return "\n".join(lines), [f"added `{step}`: the words give that count of waypoints and no step makes it"]
+
+
+def _uncounted(lines: list[str], asked: Iterable[str], variable: str) -> tuple[str, list[str]]:
+    """The lines with a resample to half or twice the count added, for words that only say which way."""
+    ways = {_way(found) for found in UNCOUNTED.finditer(" ".join(asked))}
+    if len(ways) != 1:
+        return "\n".join(lines), []
+    count = "len(t) // 2" if ways.pop() == "fewer" else "2 * len(t)"
+    step = f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
+    lines.insert(after_last_step(lines, SKILL_NAMES), step)
+    return "\n".join(lines), [f"added `{step}`: the words ask that way of waypoints and no step makes it"]
+
+
+def _way(found: re.Match[str]) -> str:
+    """'fewer' or 'more' for a count said by its way alone."""
+    word = next(group for group in found.groups() if group).lower()
+    return (
+        "fewer"
+        if word.startswith(("fewer", "less", "reduc", "decreas", "lower", "cut", "thin", "sparser"))
+        else "more"
+    )
 
 
 def _same(line: str, step: str) -> bool:

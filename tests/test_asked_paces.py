@@ -217,3 +217,15 @@ def test_a_pace_of_a_part_needs_a_step_on_that_part(words: str, steps: tuple[str
 def test_a_pace_of_the_second_half_a_step_may_make_is_left_alone(steps: tuple[str, ...]) -> None:
     code = program(*steps)
     assert add_asked_paces(code, ["hurry in the second half"], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize("clause", ["then come to a dead stop there", "come to a standstill at the end"])
+def test_a_stop_at_the_end_runs_the_speed_down_to_it(clause: str) -> None:
+    pace = asked_pace(clause, NAMES)
+    assert pace is not None and pace.step == "t = speed_profile(t, 'decelerate', start=0.7)"
+
+
+@pytest.mark.parametrize("step", ["t = stop_at(t, detect_objects('crate'))", "t = wait(t, 'middle', 5)"])
+def test_a_stop_a_step_makes_is_left_alone(step: str) -> None:
+    code = program(step)
+    assert add_asked_paces(code, ["head for the crate, then come to a complete stop"], NAMES) == (code, [])

@@ -103,6 +103,15 @@ TOWARDS_THE_END = re.compile(
     r"|\b(?:end|last\s+(?:part|stretch|bit|section))\s+of\s+the\s+(?:path|route|trajectory)\b",
     re.I,
 )
+STOP_THERE = re.compile(
+    r"^\W*(?:and\s+|then\s+)?(?:come|comes|coming|came)\s+to\s+a\s+(?:full\s+|complete\s+|dead\s+)?"
+    r"(?:stop|halt|standstill|rest)(?:\s+(?:there|at\s+the\s+(?:end|goal|finish)))?\W*$",
+    re.I,
+)
+"""A clause that asks only to be still at the path's end ("and come to a full stop there", "come to
+a standstill"): the speed runs down to 0 at the goal."""
+STOPPING_STEPS = ("stop_at", "wait")
+"""Steps that bring the robot to rest: a stop asked is made by them."""
 DECELERATE = re.compile(r"\bdecelerat\w*", re.I)
 ACCELERATE = re.compile(r"\baccelerat\w*", re.I)
 PARTS = (
@@ -140,6 +149,7 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     asked = list(asked)
     lines, notes = _without_crossed_places(lines, asked, names)
     places = [_place(line) for line in lines if call_of(line, SPEED_STEPS) is not None]
+    stopping = any(called_name(line) in STOPPING_STEPS for line in lines)
     added: list[str] = []
     for words in asked:
         for clause in split_clauses(words, names):
@@ -151,7 +161,7 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
                              f"({clause.strip()!r}), {why}")  # fmt: skip
                 lines[taken] = in_place_of(lines[taken], pace.step)
                 continue
-            if pace is None or _served(pace, places):
+            if pace is None or _served(pace, places) or (STOP_THERE.search(clause) and stopping):
                 continue
             added.append(pace.step)
             places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
@@ -280,6 +290,8 @@ def _stated_value(clause: str) -> float | None:
 
 def _changed_pace(clause: str, t: str, where: str) -> str | None:
     """The profile or scale for a clause that asks only faster or only slower, else None."""
+    if STOP_THERE.search(clause) and not where:
+        return f"speed_profile({t}, 'decelerate', start={STOP_RAMP_START})"
     slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
     if slower == faster:
         return None

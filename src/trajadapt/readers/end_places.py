@@ -1,10 +1,11 @@
 """A place the words ask the path to end at: the step that ends it there, in place of those written for it.
 
-"Finish at the lamp", "wrap up at the red cup", "land on the mat", "make the quill your end point":
-the path's end goes to the object, ``reach(t, lamp)``. "Wind up next to the chair", "end beside the
-sofa": the path ends where it passes nearest the object, ``stop_at(t, chair)`` (as "stop near the
-stinkhorn" is read). A small model answers such words with a step for another job (a side kept,
-the end part shifted, the object put in a pass over a list) or with no step of the object at all.
+"Finish at the lamp", "wrap up at the red cup", "land on the mat", "set down at the cycle", "park at
+the box", "make the quill your end point": the path's end goes to the object, ``reach(t, lamp)``.
+"Wind up next to the chair", "end beside the sofa": the path ends where it passes nearest the
+object, ``stop_at(t, chair)`` (as "stop near the stinkhorn" is read). A small model answers such
+words with a step for another job (a side kept, the end part shifted, the object put in a pass over
+a list) or with no step of the object at all.
 
 A clause asks an end place (``asked_end``) when an ending verb is followed by a word of place and
 then by the one scene object the rest of the clause names ("finish right at", "end up beside",
@@ -45,7 +46,8 @@ _NOT_A_NOUN = r"(?<!the\s)(?<!its\s)(?<!your\s)(?<!their\s)(?<!this\s)(?<!that\s
 _ENDING = (
     rf"\b{_NOT_A_NOUN}(?:end(?:s|ed|ing)?|finish(?:es|ed|ing)?|terminat\w*|conclud\w*|arriv\w*"
     r"|land(?:s|ed|ing)?|settl\w*|wrap(?:s|ped|ping)?\s+(?:it\s+|things\s+)?up|wind(?:s|ing)?\s+up|wound\s+up"
-    r"|come\s+to\s+rest|comes\s+to\s+rest|finish(?:es|ed|ing)?\s+up|end(?:s|ed|ing)?\s+up)"
+    r"|come\s+to\s+rest|comes\s+to\s+rest|finish(?:es|ed|ing)?\s+up|end(?:s|ed|ing)?\s+up"
+    r"|set(?:s|ting)?\s+down|touch(?:es|ed|ing)?\s+down|park(?:s|ed|ing)?|pull(?:s|ed|ing)?\s+up)"
     r"(?:\s+(?:the\s+)?(?:path|route|trajectory|motion|run|flight|drive|journey|movement))?"
     r"(?:\s+(?:exactly|right|directly|precisely|just|squarely|somewhere))?\s+"
 )

@@ -32,6 +32,8 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("touch down on the box", "box", "reach"),
         ("park right at the lamp", "lamp", "reach"),
         ("pull up beside the chair", "chair", "stop_at"),
+        ("lower the arm onto the box to finish", "box", "reach"),
+        ("at the very end head over to the lamp", "lamp", "reach"),
         ("have the lamp be your finishing point", "lamp", "reach"),
         ("the final position should be the box", "box", "reach"),
         ("finish up alongside the chair", "chair", "stop_at"),
@@ -53,6 +55,8 @@ def test_an_end_place_is_read_with_the_step_that_makes_it(clause: str, place: st
         "end at the midpoint of the lamp and the box",  # a point made of two objects
         "make the path end higher",
         "finish at the lamp or the box",  # two objects
+        "finally drift closer to the box",  # closer, not onto it
+        "slow down near the box at the end",  # a pace placed, no end
     ],
 )
 def test_words_that_ask_no_end_at_one_object(clause: str) -> None:

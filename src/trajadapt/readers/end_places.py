@@ -10,7 +10,8 @@ a list) or with no step of the object at all.
 A clause asks an end place (``asked_end``) when an ending verb is followed by a word of place and
 then by the one scene object the rest of the clause names ("finish right at", "end up beside",
 "arrive at", "come to rest on"), or when it names the object as the end ("make X your end point",
-"use X as the final position", "the end point should be X"). An ending word used as a noun ("at
+"use X as the final position", "the end point should be X"), or goes to it to finish ("down onto the
+soap to finish", "at the end go to the box"). An ending word used as a noun ("at
 the end near the box") asks none; neither does "stop at" (``stop_at``'s own words, read as the
 model reads them).
 
@@ -72,6 +73,12 @@ NAMED_AS_END = re.compile(
 OPENING = re.compile(r"^\s*(?:(?:the|a|an|your|its|that|this)\s+)?", re.I)
 ALTERNATIVE = re.compile(r"\s*,?\s*(?:and|or|&|/)\s", re.I)
 """A second object joined to the first ("at the lamp or the box"): no one place."""
+FINISHING = re.compile(r"\b(?:to\s+(?:finish|end)|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|finally)\b", re.I)
+ONTO = re.compile(
+    r"\b(?<!closer\s)(?<!nearer\s)(?<!close\s)(?<!next\s)(?<!up\s)(?:onto|on\s+to|into|to|at|on)\s+", re.I
+)
+"""A clause that goes onto an object to finish ("bring the gripper down onto the soap to finish",
+"at the end go to the box"): the object is the end."""
 MOVES_THE_PATH = frozenset(SKILL_NAMES) - frozenset(SPEED_STEPS)
 
 
@@ -101,6 +108,9 @@ def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
             return AskedEnd(clause, place, skill)
     named = NAMED_AS_END.search(clause)
     place = _one_name(named.group("named") or named.group("then"), names) if named else None
+    if place is None and FINISHING.search(clause):
+        reached = [found for found in ONTO.finditer(clause) if _one_name(clause[found.end() :], names)]
+        place = _one_name(clause[reached[0].end() :], names) if len(reached) == 1 else None
     return None if place is None else AskedEnd(clause, place, "reach")
 
 

@@ -24,7 +24,14 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import SPEED_STEPS, call_of, called_name, direction_argument, skill_program
+from trajadapt.code_parse import (
+    SPEED_STEPS,
+    after_last_step,
+    call_of,
+    called_name,
+    direction_argument,
+    skill_program,
+)
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.request_words import is_statement
@@ -140,6 +147,5 @@ def add_asked_shapes(code: str, asked: Iterable[str], names: Iterable[str]) -> t
             notes.append(f"added `{shape.step}`: the words ask it ({clause.strip()!r}) and no step makes it")
     if not added:
         return code, []
-    movers = (*MOVES_THE_PATH, "get_trajectory")
-    at = 1 + max(i for i, line in enumerate(lines) if called_name(line) in movers)
+    at = after_last_step(lines, MOVES_THE_PATH)
     return "\n".join([*lines[:at], *added, *lines[at:]]), notes

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from trajadapt.code_parse import (
     SPEED_STEPS,
+    after_last_step,
     assigned_call,
     call_of,
     called_name,
@@ -142,9 +143,7 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
         lines, notes = _without_steps_for(lines, end)
     variable = program[1]
     step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
-    at = 1 + max(
-        i for i, line in enumerate(lines) if called_name(line) in (*MOVES_THE_PATH, "get_trajectory")
-    )
+    at = after_last_step(lines, MOVES_THE_PATH)
     how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")

@@ -23,6 +23,7 @@ def program(*steps: str) -> str:
         ("hold the velocity steady at 0.25", "t = set_speed(t, 0.25)"),
         ("cruise at 0.4 speed", "t = set_speed(t, 0.4)"),
         ("roll along at a steady 0.35", "t = set_speed(t, 0.35)"),
+        ("maintain a uniform 0.25 all along", "t = set_speed(t, 0.25)"),
         ("from beginning to end keep the speed at 0.2", "t = set_speed(t, 0.2)"),  # no part: all of it
         ("with the pace set to .3 around the crate", "t = set_speed(t, 0.3, near=detect_objects('crate'))"),
         # slower towards the goal or the end, decelerate, accelerate: profiles

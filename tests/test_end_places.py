@@ -122,3 +122,10 @@ def test_the_stage_notes_the_added_end() -> None:
     )
     assert "t = reach(t, detect_objects('box'))" in code
     assert any(note.reader == "end-places" for note in notes)
+
+
+def test_a_stop_beside_the_object_comes_after_the_speed_steps() -> None:
+    steps = steps_after(
+        "keep a steady 0.3 and wind up close to the lamp", "t = set_speed(t, 0.3)", "t = shift(t, 'left')"
+    )
+    assert steps[-1] == "t = stop_at(t, detect_objects('lamp'))"

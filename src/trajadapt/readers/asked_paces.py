@@ -69,12 +69,13 @@ _CONNECTIVES = (
 STATED_SPEED = re.compile(
     rf"\b(?:speed|velocity|pace)\s+(?:{_CONNECTIVES}\s*){{0,4}}({NUMBER_TEXT})(?!\s*(?:%|times\b|x\b|per\s*cent))"
     rf"|\bat\s+({NUMBER_TEXT})\s+(?:units?\s+)?(?:speed|velocity|pace)\b"
-    rf"|\b(?:at|with)\s+(?:a\s+|an\s+)?(?:constant|steady|uniform|even|fixed|unchanging|consistent)\s+"
+    rf"|\b(?:at|with|hold\w*|keep\w*|maintain\w*)\s+(?:a\s+|an\s+)?(?:constant|steady|uniform|even|fixed"
+    rf"|unchanging|consistent)\s+"
     rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|times\b|x\b|per\s*cent|\w*\s*(?:height|altitude|elevation|above|high|off)\b))",
     re.I,
 )
 """A speed said as a value: "at a speed of 0.1", "speed constant at 0.1", "at 0.3 speed", "at a
-steady 0.4" (a steady number with no height word after it is a pace)."""
+steady 0.4", "hold a constant 0.5" (a steady number with no height word after it is a pace)."""
 LIMIT = re.compile(
     r"\b(?:than|at\s+most|at\s+least|max\w*|min\w*|cap\w*|limit\w*|exceed\w*|under|below|beyond"
     r"|up\s+to|no\s+more|by|factor)\b",

@@ -18,8 +18,9 @@ model reads them).
 Unless a step already ends there (``reach`` or ``append_segment`` of the object; ``stop_at`` of it
 for an end beside it), the steps written for the clause leave the code: a step on the object alone
 when no other clause names the object, and the object's entry in a step's list of objects; the
-end step is added after the last step that moves the path (speed steps after it stay after it).
-Code that is not made of skill calls alone is left alone. A review note says what changed and why.
+end step is added after the last step that moves the path (speed steps after it stay after it;
+``stop_at``, which leaves the robot at rest there, goes after them all). Code that is not made of
+skill calls alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -143,7 +144,9 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
         lines, notes = _without_steps_for(lines, end)
     variable = program[1]
     step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
-    at = after_last_step(lines, MOVES_THE_PATH)
+    at = after_last_step(
+        lines, SKILL_NAMES if end.skill == "stop_at" else MOVES_THE_PATH
+    )  # a stop stays last
     how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")

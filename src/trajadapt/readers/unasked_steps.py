@@ -64,6 +64,8 @@ TOPICS = (
             "careful",
             "steady",
             "cruis",
+            "constant",
+            "uniform",
         ),
         also=asks_pace,  # "ease off", "take it easy", "reduce your speed": the readers' one vocabulary
     ),  # fmt: skip

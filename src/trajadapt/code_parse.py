@@ -95,6 +95,26 @@ def detected_name(node: ast.expr) -> str | None:
     return None
 
 
+def number_arguments(call: ast.Call | None) -> list[float]:
+    """The plain numbers among the call's positional arguments after the trajectory."""
+    if call is None:
+        return []
+    return [
+        float(arg.value)
+        for arg in call.args[1:]
+        if isinstance(arg, ast.Constant)
+        and isinstance(arg.value, int | float)
+        and not isinstance(arg.value, bool)
+    ]
+
+
+def detected_names(node: ast.AST) -> list[str]:
+    """The names passed to ``detect_objects`` anywhere in ``node`` (a call, a statement, a program)."""
+    return [
+        name for inner in ast.walk(node) if isinstance(inner, ast.expr) and (name := detected_name(inner))
+    ]
+
+
 def skill_program(
     lines: list[str], skills: Collection[str], *, empty: bool = False
 ) -> tuple[int, str] | None:

@@ -30,7 +30,6 @@ review note says which words asked it. Code that is not made of skill calls alon
 
 from __future__ import annotations
 
-import ast
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -41,6 +40,7 @@ from trajadapt.code_parse import (
     call_of,
     called_name,
     in_place_of,
+    number_arguments,
     placed_near,
     skill_program,
 )
@@ -89,9 +89,9 @@ NOT_A_PACE = re.compile(
 """A pace word that asks nothing of the path: "quick one: go to the left", "a quick tweak"."""
 PART_ARGUMENT = re.compile(r"\bpart\s*=\s*['\"]([^'\"]+)['\"]")
 PROFILE = "profile"
+"""Where a speed profile acts, for ``_served``: along the path towards its end."""
 END_PLACES = tuple(name.casefold() for name in (*GOAL_NAMES, *START_NAMES))
 """A speed step placed at an end of the path, not at a scene object."""
-"""Where a speed profile acts, for ``_served``: along the path towards its end."""
 MOVES = ("side", "closer", "away")
 """What a clause may ask of an object besides a pace: a step placed at it for a pace answers no clause."""
 TAKEN_FOR = {"scale_speed": "not a factor", "set_height": "not a height"}
@@ -148,25 +148,25 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
         return code, []
     variable = program[1]
     asked = list(asked)
-    lines, notes = _without_crossed_places(lines, asked, names)
+    clauses = [clause for words in asked for clause in split_clauses(words, names)]
+    lines, notes = _without_crossed_places(lines, asked, clauses, names)
     places = [_place(line) for line in lines if call_of(line, SPEED_STEPS) is not None]
     stopping = any(called_name(line) in STOPPING_STEPS for line in lines)
     added: list[str] = []
-    for words in asked:
-        for clause in split_clauses(words, names):
-            pace = asked_pace(clause, names, variable)
-            taken = _speed_taken_as_factor(lines, pace)
-            if pace is not None and taken is not None:
-                why = TAKEN_FOR.get(called_name(lines[taken]) or "", "with its value")
-                notes.append(f"`{lines[taken].strip()}` -> `{pace.step}`: the words state the speed to keep "
-                             f"({clause.strip()!r}), {why}")  # fmt: skip
-                lines[taken] = in_place_of(lines[taken], pace.step)
-                continue
-            if pace is None or _served(pace, places) or (STOP_THERE.search(clause) and stopping):
-                continue
-            added.append(pace.step)
-            places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
-            notes.append(f"added `{pace.step}`: the words ask it ({clause.strip()!r}) and no step makes it")
+    for clause in clauses:
+        pace = asked_pace(clause, names, variable)
+        taken = _speed_taken_as_factor(lines, pace)
+        if pace is not None and taken is not None:
+            why = TAKEN_FOR.get(called_name(lines[taken]) or "", "with its value")
+            notes.append(f"`{lines[taken].strip()}` -> `{pace.step}`: the words state the speed to keep "
+                         f"({clause.strip()!r}), {why}")  # fmt: skip
+            lines[taken] = in_place_of(lines[taken], pace.step)
+            continue
+        if pace is None or _served(pace, places) or (STOP_THERE.search(clause) and stopping):
+            continue
+        added.append(pace.step)
+        places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
+        notes.append(f"added `{pace.step}`: the words ask it ({clause.strip()!r}) and no step makes it")
     if not notes:
         return code, []
     end = after_last_step(lines, SKILL_NAMES)
@@ -174,7 +174,7 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
 
 
 def _without_crossed_places(
-    lines: list[str], asked: list[str], names: list[str]
+    lines: list[str], asked: list[str], clauses: list[str], names: list[str]
 ) -> tuple[list[str], list[str]]:
     """``lines`` less each speed step placed at an object the words ask something else of, and a note each.
 
@@ -184,7 +184,6 @@ def _without_crossed_places(
     ``object_asks``), none of the clauses naming it asks a pace, and every clause that asks a pace
     names another object ("slow down near it" keeps a step at the object named before).
     """
-    clauses = [clause for words in asked for clause in split_clauses(words, names)]
     pacing = [clause for clause in clauses if asks_pace(clause)]
     asks = object_asks(" ".join(asked), names)
     moves = {name.casefold() for name, ask in asks.items() if ask.relation in MOVES}
@@ -224,29 +223,16 @@ def _speed_taken_as_factor(lines: list[str], pace: AskedPace | None) -> int | No
     return taken[0] if len(taken) == 1 else None
 
 
-def _number_arguments(call: ast.Call | None) -> list[float]:
-    """The plain numbers among the call's positional arguments after the trajectory."""
-    if call is None:
-        return []
-    return [
-        float(arg.value)
-        for arg in call.args[1:]
-        if isinstance(arg, ast.Constant)
-        and isinstance(arg.value, int | float)
-        and not isinstance(arg.value, bool)
-    ]
-
-
 def _keeps(line: str, value: float) -> bool:
     """Whether ``line`` sets the speed to ``value`` (``set_speed`` or a profile with that value)."""
     call = call_of(line, ("set_speed", "speed_profile"))
-    return any(abs(number - value) < 1e-9 for number in _number_arguments(call))
+    return any(abs(number - value) < 1e-9 for number in number_arguments(call))
 
 
 def _took(line: str, value: float, pace: AskedPace) -> bool:
     """Whether ``line`` took the stated speed for another quantity or left it out (see the caller)."""
     name = called_name(line)
-    numbers = _number_arguments(call_of(line, (name,)) if name else None)
+    numbers = number_arguments(call_of(line, (name,)) if name else None)
     if name == "scale_speed" or (name == "set_height" and not HEIGHT_WORDS.search(pace.clause)):
         return any(abs(number - value) < 1e-9 for number in numbers)
     if name == "speed_profile":

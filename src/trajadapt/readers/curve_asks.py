@@ -18,7 +18,6 @@ skill calls alone is left alone. A review note says what changed and why.
 
 from __future__ import annotations
 
-import ast
 import re
 from collections.abc import Iterable
 
@@ -28,6 +27,7 @@ from trajadapt.code_parse import (
     called_name,
     direction_argument,
     in_place_of,
+    number_arguments,
     skill_program,
 )
 from trajadapt.readers.words import said_directions
@@ -96,10 +96,8 @@ def _bends_the_other_way(line: str, ask: str, words: str) -> bool:
         return ask == "more" or not SMOOTHING.search(words)
     if name != "exaggerate_curve":
         return False
-    call = call_of(line, ("exaggerate_curve",))
-    factor = call.args[1] if call is not None and len(call.args) > 1 else None
-    given = factor.value if isinstance(factor, ast.Constant) else None
-    value = float(given) if isinstance(given, int | float) and not isinstance(given, bool) else 1.5
+    factors = number_arguments(call_of(line, ("exaggerate_curve",)))
+    value = factors[0] if factors else 1.5  # the skill's default factor
     return (value < 1.0) == (ask == "more")
 
 

@@ -36,7 +36,7 @@ from trajadapt.code_parse import (
     assigned_call,
     call_of,
     called_name,
-    detected_name,
+    detected_names,
     in_place_of,
     objects_of,
     skill_program,
@@ -166,7 +166,7 @@ def _without_steps_for(lines: list[str], end: AskedEnd) -> tuple[list[str], list
     notes: list[str] = []
     for line in lines:
         call = call_of(line, SKILL_NAMES)
-        named = _detected(call)
+        named = [name.casefold() for name in detected_names(call)] if call is not None else []
         if call is None or end.place.casefold() not in named or called_name(line) in SPEED_STEPS:
             kept.append(line)
         elif len(named) == 1 or not isinstance(call.args[1], ast.List | ast.Tuple):
@@ -176,17 +176,6 @@ def _without_steps_for(lines: list[str], end: AskedEnd) -> tuple[list[str], list
             change = f"`{line.strip()}` -> `{kept[-1].strip()}`"
             notes.append(f"{change}: the {end.place} is the path's end, not a place it passes")
     return kept, notes
-
-
-def _detected(call: ast.Call | None) -> list[str]:
-    """The (casefolded) names of every object the call detects, in any argument."""
-    if call is None:
-        return []
-    return [
-        name.casefold()
-        for node in ast.walk(call)
-        if isinstance(node, ast.expr) and (name := detected_name(node)) is not None
-    ]
 
 
 def _less_object(line: str, place: str) -> str:

@@ -11,11 +11,10 @@ that object's name. Anything else leaves the words as they are.
 
 from __future__ import annotations
 
-import ast
 import re
 from collections.abc import Sequence
 
-from trajadapt.code_parse import detected_name, parse_code
+from trajadapt.code_parse import detected_names, parse_code
 from trajadapt.readers.plain_words import NOT_OBJECT_WORDS
 from trajadapt.readers.words import names_in, whole_words
 
@@ -65,5 +64,4 @@ def _chosen_objects(code: str) -> set[str]:
         tree = parse_code(code)
     except SyntaxError:
         return set()
-    found = (detected_name(node) for node in ast.walk(tree) if isinstance(node, ast.expr))
-    return {name.casefold() for name in found if name}
+    return {name.casefold() for name in detected_names(tree)}

@@ -40,7 +40,7 @@ from trajadapt.code_parse import (
     assigned_call,
     call_of,
     called_name,
-    detected_name,
+    detected_names,
     direction_argument,
     in_place_of,
     on_object,
@@ -202,7 +202,4 @@ def _written_for(line: str, place: str, before: str, after: AfterGoal) -> bool:
 def _detects(line: str, place: str) -> bool:
     """Whether the line detects the object ``place`` anywhere in its arguments."""
     call = call_of(line, SKILL_NAMES)
-    return call is not None and any(
-        isinstance(node, ast.expr) and (detected_name(node) or "").casefold() == place.casefold()
-        for node in ast.walk(call)
-    )
+    return call is not None and place.casefold() in (name.casefold() for name in detected_names(call))

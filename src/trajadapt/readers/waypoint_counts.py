@@ -93,14 +93,14 @@ def count_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` resampled to the count of waypoints the words give (see the module)."""
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
-    count = asked_count(" ".join(asked))
     if program is None:
         return code, []
+    words, variable = " ".join(asked), program[1]
+    count = asked_count(words)
     written = [i for i, line in enumerate(lines) if call_of(line, ("resample",)) is not None]
     if count is None:
-        return _uncounted(lines, asked, program[1]) if not written else (code, [])
-    variable = program[1]
-    step = f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
+        return _uncounted(lines, words, variable) if not written else (code, [])
+    step = _resample_step(variable, count)
     if len(written) > 1 or any(_same(lines[i], step) for i in written):
         return code, []
     if written:
@@ -111,13 +111,17 @@ def count_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     return "\n".join(lines), [f"added `{step}`: the words give that count of waypoints and no step makes it"]
 
 
-def _uncounted(lines: list[str], asked: Iterable[str], variable: str) -> tuple[str, list[str]]:
+def _resample_step(variable: str, count: str) -> str:
+    """The ``resample`` statement of ``count`` (written on ``len(t)``) for the program's variable."""
+    return f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
+
+
+def _uncounted(lines: list[str], words: str, variable: str) -> tuple[str, list[str]]:
     """The lines with a resample to half or twice the count added, for words that only say which way."""
-    ways = {_way(found) for found in UNCOUNTED.finditer(" ".join(asked))}
+    ways = {_way(found) for found in UNCOUNTED.finditer(words)}
     if len(ways) != 1:
         return "\n".join(lines), []
-    count = "len(t) // 2" if ways.pop() == "fewer" else "2 * len(t)"
-    step = f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
+    step = _resample_step(variable, "len(t) // 2" if ways.pop() == "fewer" else "2 * len(t)")
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     return "\n".join(lines), [f"added `{step}`: the words ask that way of waypoints and no step makes it"]
 

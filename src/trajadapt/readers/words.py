@@ -129,9 +129,8 @@ AWAY = re.compile(
 )
 """What asks to come closer to an object, and to keep further from it ("tighter to", "in tight",
 "just right of", "right next to", "steer clear of", "a wider margin", "a wide berth", "plenty of
-room", a verb of less or more before
-a distance: "reduce the gap", "widen your clearance"; "avoid" asks a clearance, which the readers
-leave to ``avoid``; only the effect's flags count it as away)."""
+room", a verb of less or more before a distance: "reduce the gap", "widen your clearance"; "avoid"
+asks a clearance, which the readers leave to ``avoid``; only the effect's flags count it as away)."""
 
 
 VISIT = re.compile(

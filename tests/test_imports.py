@@ -88,6 +88,8 @@ def test_no_reader_imports_another_reader() -> None:
     helpers = {
         "trajadapt.readers.words",
         "trajadapt.readers.end_words",
+        "trajadapt.readers.stop_words",
+        "trajadapt.readers.part_words",
         "trajadapt.readers.object_words",
         "trajadapt.readers.clause_split",
         "trajadapt.readers.request_words",

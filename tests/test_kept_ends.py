@@ -56,11 +56,23 @@ def test_a_kept_end_another_step_may_move_is_put_back_last() -> None:
         ("t = lift_middle(t, 'up', 0.1)",),  # keeps both ends by its promise
         ("t = shift_part(t, 'up', 0.1, 'middle')",),
         ("t = move_away(t, detect_objects('box'))", "t = scale_speed(t, 0.5)"),
-        ("t = shift(t, 'up')", "t = extend(t, 0.2)"),  # goes on past the goal: the goal moves as asked
     ],
 )
 def test_steps_that_keep_the_ends_get_nothing(steps: tuple[str, ...]) -> None:
     assert steps_after("keep the goal where it is", *steps) == list(steps)
+
+
+def test_a_going_on_the_words_ask_beside_a_kept_goal_moves_it_as_asked() -> None:
+    steps = ("t = shift(t, 'up')", "t = extend(t, 0.2)")
+    assert steps_after("keep the goal where it is, then carry on 0.2 past it", *steps) == list(steps)
+
+
+def test_a_going_on_nobody_asks_beside_a_kept_goal_is_left_out() -> None:
+    steps = ("t = shift(t, 'up')", "t = extend(t, 0.2)")
+    assert steps_after("keep the goal where it is", *steps) == [
+        "t = shift(t, 'up')",
+        "t = reach(t, detect_objects('goal'))",
+    ]
 
 
 def test_a_whole_path_shift_keeps_its_start_so_only_the_goal_is_put_back() -> None:

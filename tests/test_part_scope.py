@@ -16,7 +16,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("move the initial position up by 0.3", PartMove("the start", "up", 0.3)),
         ("put the end position further back", PartMove("the goal", "back", None)),
         ("after arriving at the goal go up by 2.5", PartMove("past the goal", "up", 2.5)),
-        ("keep going further once you reach the destination", PartMove("past the goal", None, None)),
+        (
+            "keep going further once you reach the destination",
+            PartMove("past the goal", None, None, goes_on=True),
+        ),
         ("shift the first 8 waypoints downwards", PartMove("the first 8 waypoints", "down", None, 8)),
         ("push the first five points left", PartMove("the first 5 waypoints", "left", None, 5)),
         ("nudge the initial 3 waypoints right", PartMove("the first 3 waypoints", "right", None, 3)),
@@ -143,8 +146,9 @@ def test_going_on_past_the_goal_with_no_direction_takes_the_shift_in_a_direction
         CODE.format(step="t = shift_goal(t, 'right', 0.1)"), ["go further by 0.1 after the goal"]
     )
     assert "t = extend(t, 0.1)" in code.splitlines()
-    kept = CODE.format(step="t = shift(t, 'right', 0.1)")
-    assert scope_to_parts(kept, ["go right, then further after the goal"]) == (kept, [])
+    said = CODE.format(step="t = shift(t, 'right', 0.1)")  # a direction said is the path's own move
+    code, _ = scope_to_parts(said, ["go right, then further after the goal"])
+    assert code.splitlines()[1:-1] == ["t = shift(t, 'right', 0.1)", "t = extend(t)"]
 
 
 def test_a_goal_moved_against_the_whole_paths_shift_ends_on_the_other_side_and_the_middle_keeps_it() -> None:

@@ -117,7 +117,7 @@ def test_a_name_spaced_otherwise_or_in_part_is_written_as_the_scene_spells_it(wo
         ("don't give the red mug so wide a berth", "give the red mug less berth"),
         ("don't hover quite so far from the table lamp", "hover closer to the table lamp"),
         ("never go that fast around the red mug", "go slower around the red mug"),
-        ("Don't hurry through the last stretch", "Slow down through the last stretch"),
+        ("Don't hurry through the last stretch", "Slow down through the end"),
         ("don't crawl along nearly as slowly past the lamp", "crawl along a lot faster past the table lamp"),
         ("not anything like as close to the red mug, please", "a lot further from the red mug, please"),
         ("do not carry on after the goal", "stop after the goal"),

@@ -95,6 +95,12 @@ def test_no_way_or_both_ways_add_nothing(words: str) -> None:
     assert count_as_asked(code, [words]) == (code, [])
 
 
-def test_a_resample_the_model_wrote_for_a_way_stays() -> None:
+def test_a_made_up_count_for_a_way_takes_the_ways_count() -> None:
+    """The reader cannot see the path's length: 30 may be more than it has, half is always fewer."""
+    code, notes = count_as_asked(program("t = resample(t, 30)"), ["use fewer waypoints"])
+    assert code == program("t = resample(t, len(t) // 2)") and notes
+
+
+def test_a_count_for_a_way_the_words_say_stays() -> None:
     code = program("t = resample(t, 30)")
-    assert count_as_asked(code, ["use fewer waypoints"]) == (code, [])
+    assert count_as_asked(code, ["use fewer waypoints, say 30"]) == (code, [])

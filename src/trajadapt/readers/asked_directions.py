@@ -166,9 +166,11 @@ ENDS_MOVED = {
 "the end of the path" is a part) or the start ("the start point", "start 0.1 further left")."""
 END_NAMES = {"shift_goal": "goal", "shift_start": "start"}
 ONCE_THERE = re.compile(
-    r"\b(?:reach\w*|arriv\w*|got|get(?:s|ting)?\s+(?:to|there)|once|after|when\w*|until|before)\b", re.I
+    r"\b(?:reach\w*|arriv\w*|got|get(?:s|ting)?\s+(?:to|there)|once|after|when\w*|until|before|past|beyond)\b",
+    re.I,
 )
-"""A time at the goal ("once the goal is reached, go back"): a move past the goal, not of it."""
+"""A time at the goal ("once the goal is reached, go back") or a place past it ("carry on past the end
+toward the left"): a move past the goal, not of it."""
 OTHER_PARTS = re.compile(r"\b(?:middle|half|halfway|first|waypoints?|section|segment|portion|part)\b", re.I)
 
 

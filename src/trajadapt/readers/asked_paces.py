@@ -48,6 +48,7 @@ from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import object_asks
 from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
+from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
     FASTER,
     GOAL,
@@ -57,6 +58,7 @@ from trajadapt.readers.words import (
     asks_pace,
     longest_names,
     names_in,
+    part_named,
 )
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.skills import SKILL_NAMES
@@ -104,13 +106,8 @@ TOWARDS_THE_END = re.compile(
     r"|\b(?:end|last\s+(?:part|stretch|bit|section))\s+of\s+the\s+(?:path|route|trajectory)\b",
     re.I,
 )
-STOP_THERE = re.compile(
-    r"^\W*(?:and\s+|then\s+)?(?:come|comes|coming|came)\s+to\s+a\s+(?:full\s+|complete\s+|dead\s+)?"
-    r"(?:stop|halt|standstill|rest)(?:\s+(?:there|at\s+the\s+(?:end|goal|finish)))?\W*$",
-    re.I,
-)
-"""A clause that asks only to be still at the path's end ("and come to a full stop there", "come to
-a standstill"): the speed runs down to 0 at the goal."""
+ELSEWHERE = re.compile(r"\b(?:from|before|midway|halfway|partway|part\s+way|middle|briefly|for)\b", re.I)
+"""Words that put a stop elsewhere than at the path's end ("from a standstill", "halfway", "for 3 steps")."""
 STOPPING_STEPS = ("stop_at", "wait")
 """Steps that bring the robot to rest: a stop asked is made by them."""
 DECELERATE = re.compile(r"\bdecelerat\w*", re.I)
@@ -120,8 +117,18 @@ PARTS = (
     (re.compile(r"\b(?:second|last|latter)\s+half\b", re.I), "second half"),
     (re.compile(r"\b(?:the\s+)?(?:middle|halfway|midway)\b", re.I), "middle"),
     (re.compile(r"\b(?:the\s+)?(?:start|beginning)\b(?!\s+(?:position|point))", re.I), "start"),
+    (
+        re.compile(
+            r"\b(?:on|in|for|over|along|during|through|tak\w+|took)\s+the\s+end\b(?!\s+(?:position|point))",
+            re.I,
+        ),
+        "end",
+    ),
 )
-"""Parts of the path a clause names, and the ``part=`` word of the speed skills."""
+"""Parts of the path a clause names, and the ``part=`` word of the speed skills ("slower on the end",
+"take the end gently"; "at the end" says where a slowing ends: a profile)."""
+END_PARTS = frozenset({"end", "final", "goal"})
+"""The words of the skills' part at the end of the path."""
 WHOLE_RUN = re.compile(
     r"\b(?:from|between)\s+(?:the\s+)?(?:start|beginning|outset|takeoff)\s+(?:to|till|until|and)\s+"
     r"(?:the\s+)?(?:finish|end|goal|landing)\b",
@@ -162,7 +169,7 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
                          f"({clause.strip()!r}), {why}")  # fmt: skip
             lines[taken] = in_place_of(lines[taken], pace.step)
             continue
-        if pace is None or _served(pace, places) or (STOP_THERE.search(clause) and stopping):
+        if pace is None or _served(pace, places) or (_stops_at_the_end(clause) and stopping):
             continue
         added.append(pace.step)
         places.append(pace.near.casefold() if pace.near else "")  # serves no other clause
@@ -197,7 +204,7 @@ def _without_crossed_places(
             and near.casefold() in moves
             and pacing
             and not any(clause in pacing for clause in naming)
-            and all(longest_names(names_in(clause, names)) for clause in pacing)
+            and all(longest_names(names_in(clause, names)) or part_named(clause) for clause in pacing)
         )
         if crossed:
             notes.append(f"left out `{line.strip()}`: the words ask no pace near the {near} "
@@ -277,7 +284,7 @@ def _stated_value(clause: str) -> float | None:
 
 def _changed_pace(clause: str, t: str, where: str) -> str | None:
     """The profile or scale for a clause that asks only faster or only slower, else None."""
-    if STOP_THERE.search(clause) and not where:
+    if _stops_at_the_end(clause) and not where and not FASTER.search(clause):
         return f"speed_profile({t}, 'decelerate', start={STOP_RAMP_START})"
     slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
     if slower == faster:
@@ -295,13 +302,23 @@ def _changed_pace(clause: str, t: str, where: str) -> str | None:
     return f"scale_speed({t}, {factor:g}{where})"
 
 
+def _stops_at_the_end(clause: str) -> bool:
+    """Whether the clause asks the motion to end at rest and puts the stop nowhere else.
+
+    "Glide to a halt", "come to a standstill there", "roll to a gradual stop at the end"
+    (``stop_words.COMING_TO_REST``), not "halfway" nor a pause "for 3 steps": the speed runs down to 0 at
+    the goal.
+    """
+    return COMING_TO_REST.search(clause) is not None and ELSEWHERE.search(clause) is None
+
+
 def _served(pace: AskedPace, places: list[str | None]) -> bool:
     """Whether a speed step makes ``pace`` already (see the module).
 
     For no object and no part, any speed step; for a part of the path ("hurry through the middle"),
-    a step on that part, on all of it or at an end (the speed-scope reader places those), not a profile, which
-    changes the speed towards the end (it serves the second half); for an object, a step not placed
-    at another object.
+    a step on that part (the end is also the 'final' part), on all of it or at an end (the speed-scope
+    reader places those), not a profile, which changes the speed towards the end (it serves the
+    second half and the end); for an object, a step not placed at another object.
     """
     part = PART_ARGUMENT.search(pace.step)
     if pace.near is not None:
@@ -309,8 +326,10 @@ def _served(pace: AskedPace, places: list[str | None]) -> bool:
         return any(place in (None, PROFILE, near) or place.startswith("part:") for place in places)
     if part is None:
         return bool(places)
-    own = any(place in (None, f"part:{part.group(1)}", *END_PLACES) for place in places)
-    return own or (part.group(1) == "second half" and PROFILE in places)
+    asked = part.group(1)
+    same = {asked} | (END_PARTS if asked in END_PARTS else set())
+    own = any(place in (None, *END_PLACES) or place in {f"part:{p}" for p in same} for place in places)
+    return own or ((asked == "second half" or asked in END_PARTS) and PROFILE in places)
 
 
 def _object_place(line: str) -> str | None:

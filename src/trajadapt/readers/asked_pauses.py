@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 from trajadapt.code_parse import after_last_step, called_name, in_place_of, skill_program
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.stop_words import STOPPING
 from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
 from trajadapt.skills import SKILL_NAMES
 from trajadapt.skills.events import POSITION_WORDS
@@ -36,16 +37,14 @@ PAUSE_WORDS = re.compile(
     re.I,
 )
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
-COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:time\s*)?steps?\b", re.I)
-"""A count of timesteps: "10 timesteps", "five time steps", "7 steps"."""
+COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b", re.I)
+"""A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps"."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily)\b",
     re.I,
 )
 """A pause's length said without a count: "for a while", "for some time", "briefly"."""
-STOPPING = re.compile(r"\b(?:stop\w*|halt\w*|standstill|terminat\w*|come\s+to\s+rest)\b", re.I)
-"""Words that may ask the path to end where it stops."""
 SOME_TIME_STEPS = 10
 """The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)

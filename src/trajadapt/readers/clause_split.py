@@ -167,8 +167,23 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
     if participle and joiner == PARTICIPLE:
         return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
     if participle and joiner.strip() == ",":
+        if _only_a_heading(piece, names) and not said_directions(previous):
+            return False  # "keep going 0.15 beyond the goal, *heading forward*": the going-on's direction
         return bool(asked_kinds(piece) - asked_kinds(previous)) or _asks_more(piece, previous, names)
     return _asks_something(piece, names)
+
+
+HEADING_WORDS = frozenset(
+    "heading head headed going moving travelling traveling facing pointing pointed aiming aimed toward "
+    "towards direction straight ahead onward onwards".split()
+)
+"""Words of a participle that only says which way the motion goes ("heading forward", "going left")."""
+
+
+def _only_a_heading(piece: str, names: Sequence[str]) -> bool:
+    """Whether a piece says only a direction of travel: "heading forward", "pointing toward the left"."""
+    words = _content_words(piece, names)
+    return len(said_directions(piece)) == 1 and all(w in HEADING_WORDS or w in DIRECTION_WORDS for w in words)
 
 
 PAIRING = re.compile(r"\b(?:between|of)\s+(?:the\s+)?[\w\s-]+$", re.I)

@@ -14,7 +14,7 @@ from trajadapt.readers.words import GOAL, START
 _END = r"(start\w*|begin\w*|initial|end|ends|ending|endpoints?|goal|final|destination|both\s+ends)"
 _ENDS = (
     rf"(?:both\s+)?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
-    r"(?:\s+(?:positions?|points?|poses?|waypoints?))?"
+    r"(?:\s+(?:positions?|points?|poses?|waypoints?|spots?|places?|locations?))?"
 )
 _STATE = (
     r"(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
@@ -32,9 +32,16 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(rf"\bwith\s+{_ENDS}\s+(?:fixed|pinned|unchanged|untouched|in\s+place|locked)", re.I),
+    re.compile(
+        r"\b(?:at|to|on|in|into|for|reach\w*|toward\w*|keep\w*|retain\w*|preserv\w*|maintain\w*)\s+"
+        rf"(?:the\s+|its\s+|your\s+|their\s+)?(?:same|original|usual|old|planned|intended|existing|normal"
+        rf"|regular|unchanged)\s+{_ENDS}",
+        re.I,
+    ),
 )
 """Words that keep an end of the path where it is: "keeping the start and end positions the same",
-"don't change the start and end positions", "the endpoints stay fixed"."""
+"don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
+"head to the same endpoint", "on to the usual end spot", "keeping the same start"."""
 
 
 def kept_ends(requests: Sequence[str]) -> set[str]:

@@ -11,7 +11,9 @@ the endpoints pinned", "don't move the start or the goal"). For each kept end:
   ends by their promise: ``KEEP_ENDS``), the end is put back as the last step: the goal with
   ``reach(t, detect_objects('goal'))``, the start with ``pass_through(t, detect_objects('start'),
   0)`` (both bend the path back smoothly, and do nothing where the end did not move). A program that
-  goes on past the goal (``extend``, ``append_segment``) keeps its goal as moved.
+  goes on past the goal (``extend``, ``append_segment``) keeps its goal as moved where the words ask
+  to go on ("after the goal", "past the end"); where they do not ("then head to the same endpoint"),
+  such a step moves the kept goal and is left out.
 
 Code that is not made of skill calls alone is left alone. A review note says what changed and why.
 """
@@ -19,6 +21,7 @@ Code that is not made of skill calls alone is left alone. A review note says wha
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import SPEED_STEPS, after_last_step, assigned_call, called_name, skill_program
@@ -37,6 +40,12 @@ PUT_BACK = {
 }
 """The step that puts each end back where the original path has it."""
 PAST_THE_GOAL = ("extend", "append_segment")
+GOING_ON = re.compile(
+    r"\b(?:after|past|beyond|further|farther|more|another|continu\w*|carry\w*\s+on|keep\w*\s+(?:going|moving|on)"
+    r"|go(?:es|ing)?\s+on|onwards?|extend\w*|lengthen\w*|prolong\w*|append\w*)\b",
+    re.I,
+)
+"""Words that may ask the path to go on past its goal: a going-on beside a kept goal is then kept."""
 LEAVES = {
     "start": ("middle", "second half", "end", "final", "goal"),
     "goal": ("middle", "first half", "start", "beginning"),
@@ -46,7 +55,8 @@ LEAVES = {
 
 def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with the ends the words keep left where they are (see the module), and notes."""
-    kept = kept_ends(list(asked))
+    asked = list(asked)
+    kept = kept_ends(asked)
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES)
     if not kept or program is None:
@@ -56,6 +66,10 @@ def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         for line in [x for x in lines if called_name(x) == OWN_MOVE[end]]:
             lines.remove(line)
             notes.append(f"left out `{line.strip()}`: the words keep the {end} where it is")
+    if "goal" in kept and not any(GOING_ON.search(words) for words in asked):
+        for line in [x for x in lines if called_name(x) in PAST_THE_GOAL]:
+            lines.remove(line)
+            notes.append(f"left out `{line.strip()}`: the words keep the goal and go on nowhere past it")
     moving = {end for end in kept if _moves_ends(lines, end)}  # before any end is put back
     for end in sorted(moving):
         step = PUT_BACK[end].format(t=variable)

@@ -19,7 +19,7 @@ the scene's objects asks one thing of it:
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
   ``move_closer`` / ``move_away`` with the clause's vague word;
 - to pass close by it ("swing by X", "fly close past X", "come close to X") -> the one distance step
-  on it becomes ``pass_through`` of it.
+  on it (or ``reach`` / ``stop_at`` of it, where the clause does not end there) becomes ``pass_through``.
 
 A ``keep_side`` of an object whose clause asks no side but a distance or a pace ("it should stay
 nearer to the chair than it does now" answered with ``keep_side(t, 'front', chair)``) does another
@@ -66,6 +66,7 @@ from trajadapt.code_parse import (
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, object_asks
 from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.stop_words import ends_at_the_place
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
     asks_distance,
@@ -89,6 +90,8 @@ def _steps_for_place(ask: ObjectAsk, words: str) -> tuple[str, ...]:
     """The steps on an object that may stand where the clause asks something of it."""
     if ask.relation in ("faster", "slower") and not CIRCLING.search(words):
         return (*DISTANCE_STEPS, "circle_around")
+    if ask.relation == "by" and not ends_at_the_place(ask.clause, words):  # "detour by X": no reach(X)
+        return (*DISTANCE_STEPS, "reach", "stop_at")
     return DISTANCE_STEPS
 
 

@@ -32,34 +32,23 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass
 
 from trajadapt.code_parse import (
+    after_last_step,
     call_of,
     called_name,
     detected_name,
     direction_argument,
     in_place_of,
     parse_code,
+    skill_program,
 )
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import (
-    AWAY,
-    CLOSER,
-    GOAL,
-    NUMBER_TEXT,
-    PART_OR_END,
-    PAST_THE_GOAL,
-    SPEED_WORDS,
-    START,
-    directed_numbers,
-    intensity_word,
-    names_in,
-    said_directions,
-    whole_count,
-)
+from trajadapt.readers.part_words import PartMove, first_count, part_moves
+from trajadapt.readers.words import AWAY, CLOSER, PART_OR_END, names_in, said_directions
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
+from trajadapt.skills import SKILL_NAMES
 
 SENTENCES = re.compile(r"[;!?]|\.(?!\d)|\b(?:then|but)\b", re.I)
 NEW_GOAL_STEPS = ("pass_through", "move_closer", "stop_at")
@@ -75,113 +64,17 @@ NEW_GOAL = re.compile(
 )
 """Words that give the path a new goal: "the new goal", "the goal should be", "end at", "set the goal
 to", "use X as the goal"."""
-REFERENCE = re.compile(
-    r"\b(?:from|at|since|before|until|till|to|towards?|near|in|reach\w*|approach\w*|arriv\w*)\s+$", re.I
-)  # a part after these words is a place on the path, not the part that moves
-FIRST_COUNT = re.compile(r"\b(?:first|initial|opening|leading)\s+(\d+|[a-z]+)\s+(?:way)?points?\b", re.I)
-"""The first N waypoints, in the words for the first ones ("the initial 6 points")."""
-KEEPS = re.compile(r"\b(?:keep\w*|same|unchanged|fixed|fix|maintain\w*|retain\w*|hold\w*|stays?)\b", re.I)
-FURTHER = re.compile(
-    r"\b(?:further|farther|more|another|additional|extra|continu\w*|go(?:es|ing)? on|keep (?:going|moving|on)"
-    r"|carry on|onward\w*)\b",
-    re.I,
-)
-AMOUNT_NUMBER = re.compile(
-    rf"\b(?:by|for|of)\s+(?:another\s+|an?\s+(?:extra|additional|further)\s+)?({NUMBER_TEXT})\b", re.I
-)
-
 SHIFTS = ("shift", "shift_goal")
 REGION = re.compile(
     r"\b(?:top|bottom|upper|lower|left|right|front|back|rear|far|near)(?:most)?\s+(?:part|side|region|area|half)\b",
     re.I,
 )
 """A region of the scene named like a part ("the bottom part", "the left side"): no part of the path."""
-THERE = re.compile(r"\bthere\b", re.I)
-"""A word that points back to a place said before."""
 LANDMARK_STEPS = ("move_closer", "move_away", "append_segment")
 """Steps a small model writes with the path's own start or goal as their point (a segment appended
 to the goal goes nowhere)."""
 GOALS = frozenset(name.casefold() for name in GOAL_NAMES)
 LANDMARKS = GOALS | {name.casefold() for name in START_NAMES}
-
-
-@dataclass(frozen=True)
-class PartMove:
-    """What one clause asks: a part of the path moved in a direction (None: along the final heading)."""
-
-    part: str  # 'the start', 'the goal', 'past the goal' or 'the first N waypoints'
-    direction: str | None
-    amount: float | str | None
-    count: int = 0  # for 'first N waypoints'
-
-    def call(self, amount: ast.expr | None) -> str:
-        """The skill call that makes this move, given the amount the code wrote (None: the clause's own)."""
-        given = ast.unparse(amount) if amount is not None else None
-        if given is None and self.amount is not None:
-            given = repr(self.amount)
-        if self.part == "past the goal":
-            arguments = [given or "None", repr(self.direction)] if self.direction else [given]
-        else:
-            arguments = [repr(self.direction), given]
-        words = ", ".join(["t", *(a for a in arguments if a is not None)])
-        if self.count:
-            return f"shift_part({words}, part=(0, {self.count}))"
-        skill = {"the start": "shift_start", "the goal": "shift_goal"}.get(self.part, "extend")
-        return f"{skill}({words})"
-
-
-def part_moves(words: str) -> list[PartMove]:
-    """The part moves the clauses of ``words`` ask for (see the module docstring).
-
-    "There" in the clause right after one that names the goal is the goal ("don't stop at the goal;
-    once you get there, carry on further").
-    """
-    moves, goal_before = [], False
-    for clause in split_clauses(words):
-        move = _clause_move(THERE.sub("at the goal", clause) if goal_before else clause)
-        goal_before = bool(GOAL.search(clause))
-        if move is not None:
-            moves.append(move)
-    return moves
-
-
-def _clause_move(clause: str) -> PartMove | None:
-    directions = said_directions(clause)
-    if len(directions) > 1 or SPEED_WORDS.search(clause):
-        return None
-    direction = next(iter(directions), None)
-    amount = _clause_amount(clause)
-    if PAST_THE_GOAL.search(clause):
-        if direction is None and not FURTHER.search(clause):
-            return None
-        return PartMove("past the goal", direction, amount)
-    if direction is None or KEEPS.search(clause):
-        return None
-    count = _first_count(clause)
-    parts = [p for p, pattern in (("the start", START), ("the goal", GOAL)) if _moved_part(pattern, clause)]
-    if count:
-        parts.append(f"the first {count} waypoints")
-    if len(parts) != 1:
-        return None
-    return PartMove(parts[0], direction, amount, count)
-
-
-def _moved_part(pattern: re.Pattern[str], clause: str) -> bool:
-    """Whether the clause names the part as what moves, not as a place ("go left from the start")."""
-    return any(not REFERENCE.search(clause[: found.start()]) for found in pattern.finditer(clause))
-
-
-def _clause_amount(clause: str) -> float | str | None:
-    number = AMOUNT_NUMBER.search(clause)
-    directed = directed_numbers(clause)
-    if number:
-        return float(number.group(1))
-    return directed[0] if len(directed) == 1 else intensity_word(clause)
-
-
-def _first_count(clause: str) -> int:
-    found = FIRST_COUNT.search(clause)
-    return 0 if found is None else whole_count(found.group(1))
 
 
 def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
@@ -200,6 +93,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
             continue
         index, amount = _step_for(move, lines, said)
         if index is None:
+            _add_going_on(move, lines, notes)
             continue
         before = lines[index].strip()
         replaced = [f"t = {step}" for step in _against_the_rest(move, lines, index, move.call(amount))]
@@ -208,6 +102,24 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         against = f", and {move.part} against the rest's shift" if len(replaced) > 1 else ""
         notes.append(f"`{before}` -> `{'; '.join(replaced)}`: {why}{against}")
     return "\n".join(lines), notes
+
+
+def _add_going_on(move: PartMove, lines: list[str], notes: list[str]) -> None:
+    """The going-on a clause asks past the goal, added when no step was written for it.
+
+    "Once you reach the goal keep going for another 0.8" came back with the clause dropped. Only a
+    clause that says to go on ("keep going", "another 0.8", "carry on") asks one; one that only places
+    something after the goal ("hover above it once at the goal") does not.
+    """
+    program = skill_program(lines, SKILL_NAMES, empty=True)
+    if move.part != "past the goal" or program is None or not move.goes_on:
+        return
+    t = program[1]
+    amount = [] if move.amount is None else [repr(move.amount)]
+    direction = [] if move.direction is None else [f"direction={move.direction!r}"]
+    step = f"{t} = extend({', '.join([t, *amount, *direction])})"
+    lines.insert(after_last_step(lines, SKILL_NAMES), step)
+    notes.append(f"added `{step}`: the instruction goes on past the goal and no step does")
 
 
 def _against_the_rest(move: PartMove, lines: list[str], index: int, call: str) -> list[str]:
@@ -311,7 +223,7 @@ def _object_moves_of_first_waypoints(lines: list[str], notes: list[str], words: 
     of an object the clause names, written for the whole path, gets ``part=(0, N)``.
     """
     for clause in split_clauses(words):
-        count = _first_count(clause)
+        count = first_count(clause)
         closer, away = bool(CLOSER.search(clause)), bool(AWAY.search(clause))
         if not count or closer == away:
             continue

@@ -1,6 +1,6 @@
 """The user's words in the plain form the model and the readers read: what they say, said one way.
 
-People write a request in many forms that ask the same thing. Four of them hide what is asked from
+People write a request in many forms that ask the same thing. Five of them hide what is asked from
 a small model and from word-reading code alike, so they are written out once, before anything reads
 the words:
 
@@ -20,7 +20,9 @@ the words:
   doing ("stop walking so slowly" -> "walking faster", "stop dawdling" -> "speed up"). A negation of
   a plain pace ("don't slow down") or of a limit ("don't go faster than 2") is left as said: it asks
   no change. "Not anywhere near as fast" (or "nearly", "anything like", "remotely") is "a lot
-  slower".
+  slower";
+- a part of the path called by another name ("the last leg", "the opening stretch", "the central
+  section") is called by the part word every reader knows ("the end", "the start", "the middle").
 
 Where none of these forms occurs the words are returned exactly as said.
 """
@@ -54,6 +56,21 @@ FRACTIONS = {"a half": ".5", "a quarter": ".25", "three quarters": ".75"}
 _FRACTION = "|".join(fraction.replace(" ", r"[\s-]+") for fraction in FRACTIONS)
 AND_A_FRACTION = re.compile(rf"\b({_CARDINAL}|\d+)[\s-]+and[\s-]+({_FRACTION})\b", re.I)
 """A whole and a fraction said in words: "one and a half", "2 and a quarter", "two-and-three-quarters"."""
+
+_STRETCH = (
+    r"(?:leg|stretch|bit|section|portion|segment|part|phase|stage|few\s+metres|few\s+meters)"
+    r"(?:\s+of\s+(?:the\s+|its\s+|your\s+)?(?:path|route|trajectory|flight|run|motion|movement|way|trip|journey))?"
+)
+PART_CALLED = tuple(
+    (re.compile(rf"\b(?:the\s+|its\s+|your\s+)?(?:{words})\s+{_STRETCH}\b", re.I), part)
+    for words, part in (
+        (r"last|final|closing|ending|concluding|home|tail", "the end"),
+        (r"first|opening|initial|early", "the start"),
+        (r"middle|mid|central|centre|center", "the middle"),
+    )
+)
+"""A part of the path called by another name: "the last leg", "the final stretch of the route" (the
+end), "the opening part" (the start), "the central section" (the middle)."""
 
 NOT_OBJECT_WORDS = frozenset(
     "goal start end path trajectory route way point points waypoint waypoints middle side top bottom "
@@ -120,8 +137,15 @@ def plain_words(words: str, names: Sequence[str], keep: Callable[[str], bool]) -
     'go up by 0.2. walk further from the Siberian husky.'
     """
     plain = _decimals_in_digits(_list_as_sentences(words))
-    plain = _full_names(plain, names)
+    plain = _parts_by_their_names(_full_names(plain, names))
     return _negations_as_asks(plain, keep)
+
+
+def _parts_by_their_names(words: str) -> str:
+    """A part of the path called another way by its name: "the last leg" -> "the end"."""
+    for pattern, part in PART_CALLED:
+        words = pattern.sub(part, words)
+    return words
 
 
 def _list_as_sentences(words: str) -> str:

@@ -23,12 +23,12 @@ from collections.abc import Iterable
 from trajadapt.code_parse import call_of, in_place_of
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START
+from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import FASTER, SLOWER, names_in
 
 TO_A_STOP = re.compile(
-    r"\b(?:(?:until|till|to|into)\s+(?:you\s+|it\s+|the\s+\w+\s+)?(?:comes?\s+to\s+|reach(?:es)?\s+|gets?\s+to\s+)?"
-    r"(?:a\s+)?(?:complete\s+|full\s+|dead\s+)?(?:stop|standstill|halt)"
-    r"|(?:down\s+)?to\s+(?:zero|0)(?:\s+speed)?"
+    rf"{COMING_TO_REST.pattern}"
+    r"|\b(?:(?:down\s+)?to\s+(?:zero|0)(?:\s+speed)?"
     r"|(?:speed|velocity|pace)\s+(?:reaches|hits|becomes|is)\s+(?:zero|0))\b",
     re.I,
 )
@@ -47,9 +47,11 @@ def asked_profile(words: str, names: Iterable[str]) -> str | None:
     names = list(names)
     asked = set()
     clauses = split_clauses(words, names)
-    for before, clause in zip(("", *clauses), clauses, strict=False):
-        said = f"{before} {clause}"  # "start from a standstill and speed up": the pace in the next clause
-        if names_in(said, names):
+    for before, clause, after in zip(("", *clauses), clauses, (*clauses[1:], ""), strict=False):
+        # "start from a standstill and speed up", "slow down gradually and come to a full stop at the
+        # end": where the pace starts or ends may be said in the clause next to it
+        said = " ".join(c for c in (before, clause, after) if not names_in(c, names))
+        if names_in(clause, names):
             continue
         if SLOWER.search(clause) and TO_A_STOP.search(said):
             asked.add("decelerate")

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.stop_words import COMING_TO_REST, STOPPING
 from trajadapt.readers.words import PAST_THE_GOAL, asks_distance, asks_pace, asks_visit
 
 
@@ -67,7 +68,8 @@ TOPICS = (
             "constant",
             "uniform",
         ),
-        also=asks_pace,  # "ease off", "take it easy", "reduce your speed": the readers' one vocabulary
+        also=lambda words: asks_pace(words) or COMING_TO_REST.search(words) is not None,
+        # "ease off", "take it easy", "reduce your speed", "glide to a halt": the readers' one vocabulary
     ),  # fmt: skip
     Topic(
         "going on past the goal",
@@ -116,7 +118,12 @@ TOPICS = (
             "second",
         ),
     ),  # fmt: skip
-    Topic("stopping early", ("stop_at",), ("stop", "halt", "end", "finish", "arriv", "terminat", "until")),
+    Topic(
+        "stopping early",
+        ("stop_at",),
+        ("stop", "halt", "end", "finish", "arriv", "terminat", "until"),
+        also=lambda words: STOPPING.search(words) is not None,  # "bring it to rest at the lamp"
+    ),
     Topic(
         "a loop",
         ("spiral", "circle_around"),

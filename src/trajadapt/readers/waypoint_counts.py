@@ -13,8 +13,8 @@ A count of a part of the path ("the first 10 waypoints", "every 5 points") gives
 words give exactly one count, the one ``resample`` step of another count takes it, or, with no
 ``resample`` step, one is added as the last step. Words that only say which way ("use fewer points",
 "reduce the number of waypoints", "thin it out", "more waypoints") get half or twice the count, when
-no ``resample`` step is there. Code that is not made of skill calls alone is left
-alone. A review note says what changed and why.
+no ``resample`` step is there or the one there gives a count the words never say. Code that is not
+made of skill calls alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -99,7 +99,7 @@ def count_as_asked(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     count = asked_count(words)
     written = [i for i, line in enumerate(lines) if call_of(line, ("resample",)) is not None]
     if count is None:
-        return _uncounted(lines, words, variable) if not written else (code, [])
+        return _uncounted(lines, words, variable, written)
     step = _resample_step(variable, count)
     if len(written) > 1 or any(_same(lines[i], step) for i in written):
         return code, []
@@ -116,14 +116,32 @@ def _resample_step(variable: str, count: str) -> str:
     return f"{variable} = resample({variable}, {count.replace('len(t)', f'len({variable})')})"
 
 
-def _uncounted(lines: list[str], words: str, variable: str) -> tuple[str, list[str]]:
-    """The lines with a resample to half or twice the count added, for words that only say which way."""
+def _uncounted(lines: list[str], words: str, variable: str, written: list[int]) -> tuple[str, list[str]]:
+    """The lines with a resample to half or twice the count, for words that only say which way.
+
+    Added when no ``resample`` is written; one written with a made-up count ("resample the
+    trajectory with more waypoints" came back as ``resample(t, 20)`` on a path of 100) takes it.
+    """
     ways = {_way(found) for found in UNCOUNTED.finditer(words)}
-    if len(ways) != 1:
+    if len(ways) != 1 or len(written) > 1 or (written and not _made_up_count(lines[written[0]], words)):
         return "\n".join(lines), []
     step = _resample_step(variable, "len(t) // 2" if ways.pop() == "fewer" else "2 * len(t)")
+    if written:
+        before = lines[written[0]].strip()
+        lines[written[0]] = in_place_of(lines[written[0]], step)
+        note = f"`{before}` -> `{step}`: the words ask that way of waypoints, and no count"
+        return "\n".join(lines), [note]
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     return "\n".join(lines), [f"added `{step}`: the words ask that way of waypoints and no step makes it"]
+
+
+def _made_up_count(line: str, words: str) -> bool:
+    """Whether the ``resample`` on ``line`` gives a plain count the words never say."""
+    call = call_of(line, ("resample",))
+    given = call.args[1] if call is not None and len(call.args) > 1 else None
+    if not (isinstance(given, ast.Constant) and isinstance(given.value, int | float)):
+        return False
+    return re.search(rf"(?<![\d.]){given.value:g}(?!\d|\.\d)", words) is None
 
 
 def _way(found: re.Match[str]) -> str:

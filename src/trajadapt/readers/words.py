@@ -12,6 +12,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS, PART_WORDS
+from trajadapt.readers.stop_words import DOWN_TO_REST
 from trajadapt.skills.core import AMOUNT_WORDS, NUMBER
 
 NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
@@ -123,26 +124,29 @@ AWAY = re.compile(
     r"\b(?:away|further|farther|clear\s+of"
     r"|(?:greater|larger|bigger|more|increased?|wider|extra|wide|big|large|generous|ample|healthy|decent"
     r"|safe|respectful|comfortable|plenty\s+of|lots\s+of|a\s+lot\s+of)"
-    r" (?:distance|berth|space|room|gap|clearance|margin))\b"
+    r" (?:distance|berth|space|room|gap|clearance|margin)|wider\s+(?:around|round|past|of|by))\b"
     rf"|\b(?:increas|widen|grow|grew|enlarg|expand|extend|doubl|rais|boost)\w*\s+{GAP_NOUN}",
     re.I,
 )
 """What asks to come closer to an object, and to keep further from it ("tighter to", "in tight",
 "just right of", "right next to", "steer clear of", "a wider margin", "a wide berth", "plenty of
-room", a verb of less or more before a distance: "reduce the gap", "widen your clearance"; "avoid"
-asks a clearance, which the readers leave to ``avoid``; only the effect's flags count it as away)."""
+room", "go wider around", a verb of less or more before a distance: "reduce the gap", "widen your
+clearance"; "avoid" asks a clearance, which the readers leave to ``avoid``; only the effect's flags
+count it as away)."""
 
 
 VISIT = re.compile(
     r"\b(?:visit\w*|via|by\s+way\s+of|(?:swing|stop|drop|call)(?:s|ped|ping|ing|ed)?\s+by"
     r"|(?:close|right)\s+(?:to|by|past|beside|alongside)"
     r"|(?:pass|go|goes|going|went|fly|flies|flying|flew|drive\w*|drove|walk\w*|rout\w*|run\w*|ran"
-    r"|head\w*|travel\w*|mov\w*|come|comes|coming|came|get|gets|getting|got|sweep\w*|skim\w*|cruis\w*)"
+    r"|head\w*|travel\w*|mov\w*|come|comes|coming|came|get|gets|getting|got|sweep\w*|skim\w*|cruis\w*"
+    r"|detour\w*|divert\w*|veer\w*|swerv\w*|swing\w*|swung|dip\w*|cut\w*|wander\w*)"
     r"\s+(?:\w+\s+)?(?:by|past|next\s+to|beside|alongside|near(?:by)?|through))\b",
     re.I,
 )
 """What asks the path to pass close by an object (not closer than it is: close to it): "pass close to",
-"swing by", "fly close past", "route past", "come close to", "go through", "via", "visit"."""
+"swing by", "fly close past", "route past", "take a detour past", "veer by", "come close to", "go
+through", "via", "visit"."""
 KEEPING = re.compile(r"\b(?:stay\w*|keep\w*|kept|remain\w*|hold\w*|stick\w*)\b", re.I)
 """Verbs of keeping: "stay close to X", "keep close to X" ask the path to keep near it, not to visit it."""
 REFUSED = re.compile(r"\b(?:not|never|no|avoid\w*|without|instead\s+of|too)\b|n't\b", re.I)
@@ -250,13 +254,15 @@ def directed_numbers(clause: str) -> list[float]:
 def said_directions(words: str) -> set[str]:
     """The directions the words ask the path to move in, canonical ('upwards' -> 'up', 'climb' -> 'up').
 
-    A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``) and "raise the pace"
+    A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``), "coast down to a stop"
+    (``DOWN_TO_REST``) and "raise the pace"
     (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
     ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
     height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up", "reverse by 3" and
     "retreat a little" are back (``BACK_UP``, ``REVERSING``).
     """
-    text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", PACE_PHRASES.sub(" slow ", words.lower())))
+    text = PACE_PHRASES.sub(" slow ", DOWN_TO_REST.sub(" ", words.lower()))
+    text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", text))
     text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
     text = RIGHT_AS_STRESS.sub(
         " ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", TO_AND_FRO.sub(" ", text)))
@@ -296,7 +302,9 @@ NUMBER_WORDS = {
     "one": 1.0, "two": 2.0, "three": 3.0, "four": 4.0, "five": 5.0, "six": 6.0, "seven": 7.0,
     "eight": 8.0, "nine": 9.0, "ten": 10.0, "twice": 2.0, "double": 2.0, "thrice": 3.0, "triple": 3.0,
     "half": 0.5, "halve": 0.5, "halved": 0.5, "halving": 0.5, "quarter": 0.25,
+    "couple": 2.0, "few": 3.0, "several": 3.0,
 }  # fmt: skip
+"""Numbers said in words; "a couple", "a few", "several" are counts of 2, 3 and 3."""
 UNIT_FACTORS = (1.0, 0.01, 100.0, 0.001, 1000.0)  # the number as given, cm <-> m, mm <-> m
 INTENSITY = sorted((word for word in AMOUNT_WORDS if word and word != "default"), key=len, reverse=True)
 

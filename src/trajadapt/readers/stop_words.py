@@ -1,0 +1,58 @@
+"""Words of coming to rest, one vocabulary for every reader that reads a stop.
+
+The readers of paces (a stop at the end runs the speed down), profiles (a slowing that ends at a
+stop), pauses (a stop that ends the path) and unasked steps (a ``stop_at`` the words ask) read a
+stop in the same words, so that a new way of saying it ("bring it to rest", "glide to a halt") is
+learnt once.
+"""
+
+from __future__ import annotations
+
+import re
+
+COMING_TO_REST = re.compile(
+    r"\b(?:(?:to|into|until|till)\s+(?:you\s+|it\s+)?(?:comes?\s+to\s+|reach(?:es)?\s+|gets?\s+to\s+)?"
+    r"(?:a\s+|an\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"
+    r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+rest\b"
+    r"|(?:until|till)\s+the\s+\w+\s+(?:comes?\s+to|reach(?:es)?|gets?\s+to)\s+(?:a\s+)?(?:\w+\s+)?(?:stop|standstill|halt)\b"
+    r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts))",
+    re.I,
+)
+"""Words that end a motion at rest: "to a stop", "roll to a gradual stop", "glide to a halt", "to a
+standstill", "until it stops", "come to rest", "bring it to rest" (one vocabulary for every reader
+that reads a stop: the readers of paces, profiles, pauses and unasked steps)."""
+STOPPING = re.compile(
+    rf"{COMING_TO_REST.pattern}|\b(?:stop\w*|halt\w*|standstill|stand\w*\s+still|at\s+rest\b|motionless"
+    r"|stationary|terminat\w*)",
+    re.I,
+)
+"""Any word of stopping: the words that end a motion at rest, and "stop", "halt", "stand still"."""
+DOWN_TO_REST = re.compile(rf"\bdown\b(?=(?:\s+\w+){{0,2}}?\s+(?:{COMING_TO_REST.pattern}))", re.I)
+"""A "down" that runs to a stop ("coast down gradually to a standstill", "wind down to a halt"): a
+pace's particle, no direction."""
+ENDING_THERE = re.compile(
+    rf"{STOPPING.pattern}|\b(?:end\w*|finish\w*|arriv\w*|land\w*|park\w*|destination|goal)\b", re.I
+)
+"""Words that may end the path at a place: a stop, "end", "finish", "arrive", "land", "park"."""
+PLACE_OF_ITS_OWN = re.compile(
+    r"\b(?:goal|destination|same|original|usual|(?:at|on|by|beside|near|in|into|onto)\s+(?:the|a|an)\b"
+    r"|next\s+to\s+(?:the|a|an)\b|end\s+of)",
+    re.I,
+)
+"""Words that give an ending a place of its own: "finish at the same goal", "stop at the end"."""
+PIECES = re.compile(r",|\b(?:and|then|but|before|after)\b", re.I)
+SENTENCE_END = re.compile(r"[;!?]|\.(?!\d)")
+
+
+def ends_at_the_place(clause: str, words: str) -> bool:
+    """Whether the path ends at the place ``clause`` names.
+
+    It does when the clause says so itself, or a piece after it in its sentence ends with no place of
+    its own ("swing by the lamp and stop there", "on getting near the scissors, stop"; not "detour by
+    the bed, but finish at the same goal").
+    """
+    if ENDING_THERE.search(clause):
+        return True
+    found = words.find(clause)
+    rest = SENTENCE_END.split(words[found + len(clause) :] if found >= 0 else "")[0]
+    return any(ENDING_THERE.search(p) and not PLACE_OF_ITS_OWN.search(p) for p in PIECES.split(rest))

@@ -1,0 +1,201 @@
+"""Readings of request families in wordings no benchmark set has (issue #24: a rule that names a
+phrase family must pass paraphrases of it that none of the sets holds).
+
+Each family is read through the whole stage (``read_against_words``), as the session reads an answer:
+a stop at the end, a going-on past the goal, an end kept in other words, a detour past an object, a
+count of waypoints said only by its way, a part of the path called by another name, a pause of "a
+few" steps. The answers given are the kinds a small model writes (a step dropped, a wrong skill).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers import read_against_words
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.stop_words import COMING_TO_REST, ends_at_the_place
+from trajadapt.readers.words import said_directions
+
+NAMES = ["lamp", "crate", "armchair"]
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+def steps_after(instruction: str, *steps: str) -> list[str]:
+    code, _ = read_against_words(program(*steps), [instruction], NAMES)
+    return code.splitlines()[1:-1]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "then let it drift to a halt at the end",
+        "ease it into a gentle stop",
+        "bring the robot to rest",
+        "keep rolling until it stops",
+        "finish by settling to rest",
+        "come to a dead standstill by the end",
+    ],
+)
+def test_a_stop_is_read_in_many_words(words):
+    assert COMING_TO_REST.search(words)
+
+
+@pytest.mark.parametrize(
+    "words", ["go to the stop sign", "apply it to the rest of the path", "start from rest"]
+)
+def test_no_stop_where_the_words_only_name_one(words):
+    assert not COMING_TO_REST.search(words)
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    [
+        "Shift right a little, and let it drift to a halt at the end.",
+        "Shift right a little; ease it into a gentle stop at the finish.",
+        "Shift right a little and bring the robot to rest at the end.",
+    ],
+)
+def test_a_stop_at_the_end_runs_the_speed_down(instruction):
+    assert "t = speed_profile(t, 'decelerate', start=0.7)" in steps_after(
+        instruction, "t = shift(t, 'right', 'a little')"
+    )
+
+
+def test_a_down_that_runs_to_a_stop_is_no_direction():
+    assert said_directions("wind it down gently to a standstill") == set()
+    assert said_directions("go down to the crate") == {"down"}
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    ["Bring the robot to rest beside the lamp.", "Settle to rest right by the lamp."],
+)
+def test_a_stop_at_an_object_said_as_rest_is_kept(instruction):
+    assert "t = stop_at(t, detect_objects('lamp'))" in steps_after(
+        instruction, "t = stop_at(t, detect_objects('lamp'))"
+    )
+
+
+@pytest.mark.parametrize(
+    ("instruction", "added"),
+    [
+        ("Move nearer the crate, and after the goal continue another 0.4.", "t = extend(t, 0.4)"),
+        ("Once the end is reached, carry on toward the right.", "t = extend(t, direction='right')"),
+        ("Go on for an extra 0.25 beyond the goal, heading left.", "t = extend(t, 0.25, direction='left')"),
+    ],
+)
+def test_a_going_on_past_the_goal_no_step_makes_is_added(instruction, added):
+    assert added in steps_after(instruction, "t = move_closer(t, detect_objects('crate'))")
+
+
+def test_a_going_on_taken_for_a_shift_goes_on_instead():
+    steps = steps_after("Push on 0.3 past the goal, pointing backward.", "t = shift(t, 'back', 0.3)")
+    assert steps == ["t = extend(t, 0.3, 'back')"]
+
+
+def test_a_place_after_the_goal_asks_no_going_on():
+    steps = steps_after("After the goal, hover above the lamp for a while.", "t = wait(t, 'goal', 10)")
+    assert not any("extend" in step for step in steps)
+
+
+def test_a_heading_joins_the_going_on_it_directs():
+    assert split_clauses("keep rolling 0.2 past the end, facing forward") == (
+        "keep rolling 0.2 past the end, facing forward",
+    )
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    [
+        "Arc over the crate and return to the original end point.",
+        "Loop over the crate, then head for the usual destination.",
+        "Go over the crate while keeping the same goal.",
+    ],
+)
+def test_an_end_kept_in_other_words_leaves_out_a_going_on(instruction):
+    steps = steps_after(instruction, "t = pass_over(t, detect_objects('crate'))", "t = extend(t)")
+    assert not any("extend" in step for step in steps)
+    assert "t = reach(t, detect_objects('goal'))" in steps
+
+
+def test_a_going_on_asked_beside_a_kept_goal_stays():
+    steps = steps_after(
+        "Keep the goal fixed and once there continue 0.2 to the left.", "t = extend(t, 0.2, 'left')"
+    )
+    assert "t = extend(t, 0.2, 'left')" in steps
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    ["Make a detour past the armchair.", "Veer by the armchair on the way.", "Divert past the armchair."],
+)
+def test_a_detour_past_an_object_passes_it(instruction):
+    steps = steps_after(instruction, "t = smooth(t)")
+    assert "t = pass_through(t, detect_objects('armchair'))" in steps
+
+
+def test_a_detour_answered_with_an_end_there_passes_by_instead():
+    steps = steps_after(
+        "Swerve by the armchair, but end at the same goal.", "t = reach(t, detect_objects('armchair'))"
+    )
+    assert steps[0] == "t = pass_through(t, detect_objects('armchair'))"
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["swing by the lamp and halt there", "on reaching the lamp, stop", "pass the lamp and land on it"],
+)
+def test_an_ending_after_a_visit_ends_at_its_place(words):
+    assert ends_at_the_place(words.split(" and ")[0].split(",")[0], words)
+
+
+def test_an_ending_with_a_place_of_its_own_is_elsewhere():
+    assert not ends_at_the_place("swing by the lamp", "swing by the lamp, then stop at the end")
+
+
+@pytest.mark.parametrize(
+    ("instruction", "count"),
+    [("Give the path a denser set of points.", "2 * len(t)"), ("Thin the waypoints out.", "len(t) // 2")],
+)
+def test_a_count_said_by_its_way_replaces_a_made_up_one(instruction, count):
+    assert steps_after(instruction, "t = resample(t, 35)") == [f"t = resample(t, {count})"]
+
+
+def test_a_count_the_words_say_is_kept():
+    assert steps_after("Use fewer waypoints, 35 of them.", "t = resample(t, 35)") == ["t = resample(t, 35)"]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "part"),
+    [
+        ("Move away from the lamp and be slower over the closing stretch.", "end"),
+        ("Move away from the lamp and be slower over the opening leg.", "start"),
+        ("Move away from the lamp and be slower through the central section.", "middle"),
+    ],
+)
+def test_a_part_called_by_another_name_places_its_pace(instruction, part):
+    steps = steps_after(instruction, "t = move_away(t, detect_objects('lamp'))")
+    assert f"t = scale_speed(t, 0.65, part='{part}')" in steps
+
+
+def test_a_pace_of_a_part_crossed_onto_an_object_leaves_it():
+    steps = steps_after(
+        "Keep further from the crate, and go slower in the final segment.",
+        "t = move_away(t, detect_objects('crate'))",
+        "t = scale_speed(t, 0.65, near=detect_objects('crate'))",
+    )
+    assert not any("near=detect_objects('crate')" in step for step in steps)
+    assert "t = scale_speed(t, 0.65, part='end')" in steps
+
+
+@pytest.mark.parametrize(
+    ("instruction", "steps"),
+    [("Idle at the crate for a few steps.", 3), ("Dwell beside the crate for a couple of time steps.", 2)],
+)
+def test_a_pause_of_a_few_steps_is_counted(instruction, steps):
+    assert f"t = wait(t, detect_objects('crate'), {steps})" in steps_after(
+        instruction, "t = pass_through(t, detect_objects('crate'))"
+    )

@@ -1,5 +1,7 @@
 """Running a plan's code: the sandbox, then the result checked and held to the constraints.
 
+The closing limit steps of a skill program are held together first (``checks.closing_limits``).
+
 ``execute`` returns one ``Execution`` record (the outcome, what the code printed, the sandbox's and
 the projection's notes, how far the projection moved waypoints), so a session keeps the record of
 the result it keeps and drops the others whole.
@@ -10,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+from trajadapt.checks.closing_limits import hold_closing_limits
 from trajadapt.checks.constraints import ConstraintMove, constraints_for, new_violations
 from trajadapt.checks.projection import project
 from trajadapt.checks.review import validate_result
@@ -75,6 +78,10 @@ def execute(
         trajectory = validate_result(result.rows)
     except InvalidTrajectory as exc:
         return replace(ran, outcome=Failure.of("InvalidTrajectory", str(exc)))
+    if skills:
+        held, note = hold_closing_limits(code, trajectory.array, case.scene)
+        if note is not None:
+            trajectory, ran = validate_result(held), replace(ran, notes=(*ran.notes, note))
     return held_to_constraints(ran, trajectory, case, settings, " ".join(asked))
 
 

@@ -1,0 +1,151 @@
+"""The limits a program sets at its close, kept together.
+
+A program that ends with several limit steps asks all of them of its result: "don't get within 0.6 m
+of the person, and don't dip below 0.2 m" came back as ``avoid(t, detect_objects('Person'), 0.6)``
+then ``stay_above(t, 0.2)``, and lifting the path above 0.2 brought it back to 0.247 from the person.
+Each step keeps its own limit only when it runs. The closing run of limit steps (``avoid`` of scene
+objects with a stated clearance, ``stay_above``, ``stay_below``: every step after the program's last
+other step) is applied again in turn, at most ``ROUNDS`` times, until every limit holds; the result is
+kept only if they all hold then, with a note that says which limit a later step had broken and how
+far the waypoints moved. A limit written before another kind of step is that program's own business
+(``avoid`` of a box, then ``reach`` of the box, asks the path to end at the box).
+
+Only literal numbers and ``detect_objects`` of scene objects are read from the code: nothing of it
+runs here, and the skills applied are the product's own.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from trajadapt.code_parse import detected_name, parse_code
+from trajadapt.model.geometry import Array
+from trajadapt.model.scene import Scene
+from trajadapt.skills import bind_skills
+
+ROUNDS = 10
+"""How often the closing limits are applied in turn at most (two rounds sufficed where measured)."""
+SLACK = 1e-6
+LIMIT_STEPS = ("avoid", "stay_above", "stay_below")
+
+
+@dataclass(frozen=True)
+class Limit:
+    """One limit a closing step sets: a clearance from points, or a height bound."""
+
+    skill: str
+    value: float
+    points: tuple[tuple[float, float, float], ...] = ()
+    names: tuple[str, ...] = ()
+
+    def holds(self, trajectory: Array) -> bool:
+        """Whether every waypoint keeps this limit."""
+        return self.worst(trajectory) >= -SLACK
+
+    def worst(self, trajectory: Array) -> float:
+        """By how much the worst waypoint keeps the limit (negative: broken by that much)."""
+        if self.skill == "stay_above":
+            return float(trajectory[:, 2].min() - self.value)
+        if self.skill == "stay_below":
+            return float(self.value - trajectory[:, 2].max())
+        nearest = min(float(np.linalg.norm(trajectory[:, :3] - p, axis=1).min()) for p in self.points)
+        return nearest - self.value
+
+    def describe(self) -> str:
+        """The limit in words."""
+        if self.skill == "avoid":
+            return f"the clearance {self.value:g} from {' and '.join(self.names)}"
+        return f"a height {'above' if self.skill == 'stay_above' else 'below'} {self.value:g}"
+
+    def apply(self, trajectory: Array, skills: dict[str, Callable[..., Array]]) -> Array:
+        """The trajectory after this limit's skill."""
+        if self.skill == "avoid":
+            return skills["avoid"](trajectory, [list(p) for p in self.points], self.value)
+        return skills[self.skill](trajectory, self.value)
+
+
+def closing_limits(code: str, scene: Scene) -> list[Limit]:
+    """The limits of the program's closing run of limit steps, in order ([] when one cannot be read)."""
+    try:
+        body = parse_code(code).body
+    except SyntaxError:
+        return []
+    steps = [s for s in body if not _passes_on(s)]
+    limits: list[Limit] = []
+    for statement in reversed(steps):
+        call = statement.value if isinstance(statement, ast.Assign) else None
+        name = call.func.id if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) else ""
+        if name not in LIMIT_STEPS:
+            break
+        limit = _limit(name, call, scene)  # type: ignore[arg-type]
+        if limit is None:
+            return []
+        limits.insert(0, limit)
+    return limits
+
+
+def hold_closing_limits(
+    code: str, trajectory: Array, scene: Scene, skills: dict[str, Callable[..., Array]] | None = None
+) -> tuple[Array, str | None]:
+    """``trajectory`` with the program's closing limits held together, and a note saying so.
+
+    Unchanged, with None, when they hold already, when there are fewer than two, or when they cannot
+    all be held.
+    """
+    limits = closing_limits(code, scene)
+    broken = [limit for limit in limits if not limit.holds(trajectory)]
+    if len(limits) < 2 or not broken:
+        return trajectory, None
+    skills = skills or bind_skills()
+    held = trajectory.copy()
+    for _ in range(ROUNDS):
+        for limit in limits:
+            held = limit.apply(held, skills)
+        if all(limit.holds(held) for limit in limits):
+            moved = float(np.linalg.norm(held[:, :3] - trajectory[:, :3], axis=1).max())
+            what = "; ".join(f"{x.describe()} (short by {-x.worst(trajectory):.3g})" for x in broken)
+            return held, (
+                f"the closing limits held together: a later limit step had broken {what}; "
+                f"waypoints moved by at most {moved:.4g}"
+            )
+    return trajectory, None
+
+
+def _passes_on(statement: ast.stmt) -> bool:
+    """Whether a statement only hands the result on (``modified_trajectory = t``) or is a blank expression."""
+    if isinstance(statement, ast.Assign):
+        return isinstance(statement.value, ast.Name)
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant)
+
+
+def _limit(name: str, call: ast.Call, scene: Scene) -> Limit | None:
+    """The limit a step sets, when its numbers are literal and its points scene objects."""
+    arguments = list(call.args[1:]) + [k.value for k in call.keywords]
+    if name != "avoid":
+        value = _number(arguments[0]) if len(arguments) == 1 else None
+        return None if value is None else Limit(name, value)
+    if len(arguments) != 2:
+        return None
+    names = _object_names(arguments[0])
+    value = _number(arguments[1])
+    found = [scene.find(n) for n in names]
+    if value is None or not names or any(obj is None for obj in found):
+        return None
+    points = tuple(obj.position for obj in found if obj is not None)
+    return Limit(name, value, points, tuple(names))
+
+
+def _number(node: ast.expr) -> float | None:
+    value = node.value if isinstance(node, ast.Constant) else None
+    return float(value) if isinstance(value, int | float) and not isinstance(value, bool) else None
+
+
+def _object_names(node: ast.expr) -> list[str]:
+    """The names of ``detect_objects('X')`` or a list of such calls; [] for anything else."""
+    items = node.elts if isinstance(node, ast.List | ast.Tuple) else [node]
+    names = [detected_name(item) for item in items]
+    return [name for name in names if name] if all(names) else []

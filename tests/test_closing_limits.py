@@ -1,0 +1,113 @@
+"""The limits a program sets at its close hold together (checks.closing_limits; issue #24 item 4)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from trajadapt.checks.closing_limits import closing_limits, hold_closing_limits
+from trajadapt.model.scene import Scene, SceneObject
+from trajadapt.skills import bind_skills
+
+SKILLS = bind_skills()
+SCENE = Scene(objects=(SceneObject("person", 0.0, 0.0, 0.3), SceneObject("box", 0.5, 0.5, 0.0)))
+
+
+def program(*steps: str) -> str:
+    return "\n".join(["t = get_trajectory()", *steps, "modified_trajectory = t"])
+
+
+def dipping_path(depth: float = -0.3, n: int = 40) -> np.ndarray:
+    """A path that dips below the person on its way across."""
+    s = np.linspace(0.0, 1.0, n)
+    return np.column_stack(
+        [-1.0 + 2.0 * s, 0.05 * np.sin(3 * s), 0.8 + (depth - 0.8) * np.sin(np.pi * s), np.ones(n)]
+    )
+
+
+def run(code: str, path: np.ndarray) -> np.ndarray:
+    """The program's steps applied in order, as the sandbox would (skills only)."""
+    t = path.copy()
+    for line in code.splitlines()[1:-1]:
+        t = eval(line.split("=", 1)[1], {**SKILLS, "t": t, "detect_objects": _detect})  # noqa: S307 - test programs
+    return t
+
+
+def _detect(name: str) -> list[float]:
+    found = SCENE.find(name)
+    assert found is not None
+    return list(found.position)
+
+
+def clearance(t: np.ndarray, name: str) -> float:
+    return float(np.linalg.norm(t[:, :3] - np.asarray(_detect(name)), axis=1).min())
+
+
+CLEAR_THEN_ABOVE = program("t = avoid(t, detect_objects('person'), 0.6)", "t = stay_above(t, 0.2)")
+
+
+def test_a_height_limit_that_breaks_the_clearance_before_it_is_held_with_it():
+    ran = run(CLEAR_THEN_ABOVE, dipping_path())
+    assert clearance(ran, "person") < 0.6  # the later limit broke the earlier one, as written
+    held, note = hold_closing_limits(CLEAR_THEN_ABOVE, ran, SCENE)
+    assert clearance(held, "person") >= 0.6 - 1e-6 and held[:, 2].min() >= 0.2 - 1e-9
+    assert note is not None and "clearance 0.6 from person" in note
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    depth=st.floats(-0.6, 0.6),
+    clear=st.floats(0.1, 0.7),
+    floor=st.floats(0.0, 0.4),
+    order=st.booleans(),
+)
+def test_closing_limits_hold_together_or_the_result_stays(depth, clear, floor, order):
+    clear, floor = round(clear, 3), round(floor, 3)  # as the program says them
+    steps = [f"t = avoid(t, detect_objects('person'), {clear})", f"t = stay_above(t, {floor})"]
+    code = program(*(steps if order else steps[::-1]))
+    ran = run(code, dipping_path(depth))
+    held, note = hold_closing_limits(code, ran, SCENE)
+    if note is None:
+        np.testing.assert_array_equal(held, ran)
+    else:
+        assert clearance(held, "person") >= clear - 1e-6 and held[:, 2].min() >= floor - 1e-6
+        np.testing.assert_array_equal(held[:, 3], ran[:, 3])  # speeds are not the limits' business
+
+
+@pytest.mark.parametrize(
+    "code",
+    [
+        # a step after the limits is the program's own business ("end at the box")
+        program(
+            "t = avoid(t, detect_objects('person'), 0.6)", "t = stay_above(t, 0.2)", "t = reach(t, [0, 0, 0])"
+        ),
+        # one closing limit keeps itself
+        program("t = shift(t, 'down', 0.5)", "t = avoid(t, detect_objects('person'), 0.6)"),
+        # a clearance that is no literal, or from a point that is no scene object, is not read
+        program("t = avoid(t, detect_objects('person'), 2 * 0.3)", "t = stay_above(t, 0.2)"),
+        program("t = avoid(t, [0, 0, 0.3], 0.6)", "t = stay_above(t, 0.2)"),
+        program("t = avoid(t, detect_objects('ghost'), 0.6)", "t = stay_above(t, 0.2)"),
+    ],
+)
+def test_only_a_closing_run_of_readable_limits_is_held(code):
+    path = run(
+        program("t = avoid(t, detect_objects('person'), 0.6)", "t = stay_above(t, 0.2)"), dipping_path()
+    )
+    held, note = hold_closing_limits(code, path, SCENE)
+    assert note is None
+    np.testing.assert_array_equal(held, path)
+
+
+def test_the_closing_run_is_read_in_order_with_lists_of_objects():
+    code = program(
+        "t = shift(t, 'up')",
+        "t = stay_below(t, 1.5)",
+        "t = avoid(t, [detect_objects('person'), detect_objects('box')], 0.25)",
+    )
+    limits = closing_limits(code, SCENE)
+    assert [(x.skill, x.value, x.names) for x in limits] == [
+        ("stay_below", 1.5, ()),
+        ("avoid", 0.25, ("person", "box")),
+    ]

@@ -23,8 +23,9 @@ that names one part of the path and one direction asks for a move of that part:
 The one step written for it is replaced: a whole-path ``shift`` in that direction (or, past the
 goal, a ``shift_goal``), else a ``move_closer``/``move_away`` to the path's own start or goal (a
 landmark, not a place to approach). The step keeps its amount; a landmark step takes the clause's
-number or vague word. Nothing else changes, and a review note says what was replaced and why.
-Measured on stored answers in docs/benchmarks.md.
+number or vague word. A going-on past the goal that the clause says ("keep going for another 0.8")
+and no step was written for is added. Nothing else changes, and a review note says what was
+replaced and why. The reading of the words is ``part_words``. Measured in docs/benchmarks.md.
 """
 
 from __future__ import annotations

@@ -199,3 +199,38 @@ def test_a_pause_of_a_few_steps_is_counted(instruction, steps):
     assert f"t = wait(t, detect_objects('crate'), {steps})" in steps_after(
         instruction, "t = pass_through(t, detect_objects('crate'))"
     )
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["turn the speed down near the end", "dial the pace back up afterwards", "knock the velocity down a bit"],
+)
+def test_a_speed_turned_down_or_up_is_no_direction(words):
+    assert said_directions(words) == set()
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    [
+        "Keep well clear of the crate and see that the run finishes with a complete stop.",
+        "Stay further from the crate; the trip should end in a dead halt at the goal.",
+    ],
+)
+def test_a_stop_at_the_end_taken_to_another_clauses_object_is_the_ends(instruction):
+    steps = steps_after(
+        instruction, "t = move_away(t, detect_objects('crate'))", "t = stop_at(t, detect_objects('crate'))"
+    )
+    assert steps == [
+        "t = move_away(t, detect_objects('crate'))",
+        "t = speed_profile(t, 'decelerate', start=0.7)",
+    ]
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    ["Head over to the crate and grind to a halt.", "Pass the crate, then come to a stop right there."],
+)
+def test_a_stop_said_after_reaching_an_object_stays_there(instruction):
+    assert "t = stop_at(t, detect_objects('crate'))" in steps_after(
+        instruction, "t = stop_at(t, detect_objects('crate'))"
+    )

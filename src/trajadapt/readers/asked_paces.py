@@ -39,6 +39,7 @@ from trajadapt.code_parse import (
     after_last_step,
     call_of,
     called_name,
+    detected_names,
     in_place_of,
     number_arguments,
     placed_near,
@@ -48,7 +49,7 @@ from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import object_asks
 from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
-from trajadapt.readers.stop_words import COMING_TO_REST
+from trajadapt.readers.stop_words import COMING_TO_REST, ENDING_THERE
 from trajadapt.readers.words import (
     FASTER,
     GOAL,
@@ -106,6 +107,11 @@ TOWARDS_THE_END = re.compile(
     r"|\b(?:end|last\s+(?:part|stretch|bit|section))\s+of\s+the\s+(?:path|route|trajectory)\b",
     re.I,
 )
+AT_THE_END = re.compile(
+    r"^(?!.*\b(?:there|(?:at|by|on|beside|to|near)\s+(?:it|that))\b).*\b(?:end|ends|ending|goal|finish\w*|destination)\b",
+    re.I,
+)
+"""A stop the clause places at the path's end, pointing back to no place said before."""
 ELSEWHERE = re.compile(r"\b(?:from|before|midway|halfway|partway|part\s+way|middle|briefly|for)\b", re.I)
 """Words that put a stop elsewhere than at the path's end ("from a standstill", "halfway", "for 3 steps")."""
 STOPPING_STEPS = ("stop_at", "wait")
@@ -158,6 +164,7 @@ def add_asked_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     clauses = [clause for words in asked for clause in split_clauses(words, names)]
     lines, notes = _without_crossed_places(lines, asked, clauses, names)
     places = [_place(line) for line in lines if call_of(line, SPEED_STEPS) is not None]
+    lines, notes = _stops_at_other_clauses_objects(lines, clauses, names, notes)
     stopping = any(called_name(line) in STOPPING_STEPS for line in lines)
     added: list[str] = []
     for clause in clauses:
@@ -209,6 +216,27 @@ def _without_crossed_places(
         if crossed:
             notes.append(f"left out `{line.strip()}`: the words ask no pace near the {near} "
                          f"({' / '.join(repr(c.strip()) for c in pacing)} place it elsewhere)")  # fmt: skip
+            continue
+        kept.append(line)
+    return kept, notes
+
+
+def _stops_at_other_clauses_objects(
+    lines: list[str], clauses: list[str], names: list[str], notes: list[str]
+) -> tuple[list[str], list[str]]:
+    """``lines`` less a ``stop_at`` of an object no clause ends at, where a clause asks to end at rest.
+
+    "Give the sofa a wider berth, and coast to a standstill at the end" came back with
+    ``stop_at(sofa)``: the stop asked is the end's, at no place, and the asked profile makes it.
+    """
+    if not any(_stops_at_the_end(c) and AT_THE_END.search(c) and not names_in(c, names) for c in clauses):
+        return lines, notes
+    kept = []
+    for line in lines:
+        stop = call_of(line, ("stop_at",))
+        near = [n for n in detected_names(stop) if n.casefold() not in END_PLACES] if stop else []
+        if near and not any(names_in(c, near) and ENDING_THERE.search(c) for c in clauses):
+            notes = [*notes, f"left out `{line.strip()}`: the words stop at the end, not at the {near[0]}"]
             continue
         kept.append(line)
     return kept, notes

@@ -15,12 +15,14 @@ COMING_TO_REST = re.compile(
     r"(?:a\s+|an\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"
     r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+rest\b"
     r"|(?:until|till)\s+the\s+\w+\s+(?:comes?\s+to|reach(?:es)?|gets?\s+to)\s+(?:a\s+)?(?:\w+\s+)?(?:stop|standstill|halt)\b"
-    r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts))",
+    r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts)"
+    r"|\b(?:end|ends|ending|ended|finish\w*)\s+(?:at|in|with)\s+(?:a\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b)",
     re.I,
 )
 """Words that end a motion at rest: "to a stop", "roll to a gradual stop", "glide to a halt", "to a
-standstill", "until it stops", "come to rest", "bring it to rest" (one vocabulary for every reader
-that reads a stop: the readers of paces, profiles, pauses and unasked steps)."""
+standstill", "until it stops", "come to rest", "bring it to rest", "ends at a full stop" (one
+vocabulary for every reader that reads a stop: the readers of paces, profiles, pauses and unasked
+steps)."""
 STOPPING = re.compile(
     rf"{COMING_TO_REST.pattern}|\b(?:stop\w*|halt\w*|standstill|stand\w*\s+still|at\s+rest\b|motionless"
     r"|stationary|terminat\w*)",

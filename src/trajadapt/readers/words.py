@@ -76,11 +76,14 @@ reached"."""
 
 PACE_PHRASES = re.compile(
     r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)"
-    r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this)\s+)?(?:down|up)\b",
+    r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this)\s+)?(?:down|up)\b"
+    r"|\b(?:bring|brought|get|got|take|took|turn|dial|knock|drop|crank|push|pull)\w*\s+(?:the\s+|its\s+|your\s+)?"
+    r"(?:speed|pace|velocity|tempo)\s+(?:back\s+)?(?:down|up)\b",
     re.I,
 )
 """Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease
-up"; "pick up the pace" is a word before a speed, which ``said_directions`` already leaves out)."""
+up", "bring the speed down", "dial the pace back up"; "pick up the pace" is a word before a speed,
+which ``said_directions`` already leaves out)."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""

@@ -13,6 +13,7 @@ import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.height_asks import asked_heights
 from trajadapt.readers.stop_words import COMING_TO_REST, ends_at_the_place
 from trajadapt.readers.words import said_directions
 
@@ -234,3 +235,29 @@ def test_a_stop_said_after_reaching_an_object_stays_there(instruction):
     assert "t = stop_at(t, detect_objects('crate'))" in steps_after(
         instruction, "t = stop_at(t, detect_objects('crate'))"
     )
+
+
+@pytest.mark.parametrize(
+    ("words", "limit"),
+    [
+        ("don't ever sink below an altitude of 0.4", ("stay_above", 0.4)),
+        ("stay under an elevation of 1.2 throughout", ("stay_below", 1.2)),
+        ("never climb above the height of 0.9", ("stay_below", 0.9)),
+    ],
+)
+def test_a_limit_word_before_a_named_height_is_a_limit(words, limit):
+    assert asked_heights(words) == [limit]
+
+
+@pytest.mark.parametrize("words", ["sway left and right as you go", "bob up and down along the way"])
+def test_a_swing_both_ways_is_no_direction_and_no_break(words):
+    assert said_directions(words) == set()
+    assert len(split_clauses(words)) == 1
+
+
+@pytest.mark.parametrize(
+    "instruction",
+    ["Hold a buffer of 0.2 from the crate and speed up a little.", "Leave the crate a clearance of 0.2 and go a bit faster."],
+)
+def test_a_clearance_said_as_a_noun_is_kept_with_avoid(instruction):
+    assert "t = avoid(t, detect_objects('crate'), 0.2)" in steps_after(instruction, "t = scale_speed(t, 1.2)")

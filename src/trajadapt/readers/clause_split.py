@@ -39,12 +39,13 @@ from trajadapt.readers.words import (
 )
 
 BREAKS = re.compile(
-    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and(?!\s+(?:forth|fro)\b)|then|but|also"
+    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and(?!\s+(?:forth|fro)\b)(?!(?<=\bleft and)\s+right\b)"
+    r"(?!(?<=\bright and)\s+left\b)(?!(?<=\bup and)\s+down\b)(?!(?<=\bdown and)\s+up\b)|then|but|also"
     r"|(?<!\ba )(?<!\blittle )(?<!\bshort )(?<!\bgood )while)\b",
     re.I,
 )
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words
-("back and forth", "to and fro" join no requests)."""
+("back and forth", "to and fro", "left and right", "up and down" join no requests)."""
 
 LEAD_INS = re.compile(
     r"^(?:after|once|when|whenever|if|while|as|before|upon|until|as soon as|at the end|at the start"

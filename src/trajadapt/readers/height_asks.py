@@ -42,8 +42,9 @@ ABOVE = rf"above|over|higher than|more than|at least|exceed\w*|{_MINIMUM}"
 """Words of a limit before a height: "below 0.3", "cap the altitude at 1.5", "a ceiling of 2"; "above",
 "a minimum altitude of 0.5"."""
 AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover|stay|keep|cruise|move)\w* at"
-NAMED = r"(?:a height of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
-"""How a height may be named before its number: "a height of 0.2", "z = 0.2", "a z of 0.2"."""
+NAMED = rf"(?:(?:an?\s+|the\s+)?{LEVEL}\s+of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
+"""How a height may be named before its number: "a height of 0.2", "an altitude of 0.1", "z = 0.2",
+"a z of 0.2"."""
 RELATIONS = (
     ("stay_below", re.compile(rf"\b(?:{BELOW})\s+{NAMED}{NUMBER}", re.I)),
     ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+{NAMED}{NUMBER}", re.I)),

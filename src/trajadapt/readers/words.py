@@ -161,12 +161,14 @@ PLACING = re.compile(r"^\W*(?:while|when\w*|as|once|if|until|passing|going|drivi
 MINIMUM_DISTANCE = re.compile(
     r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
-    rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?)\s*({NUMBER_TEXT})",
+    rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
+    r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of)\s*"
+    rf"({NUMBER_TEXT})",
     re.I,
 )
 """A clearance the words state as a least distance: "at least 0.2", "no closer than 0.2", "never
 closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
-between the negation and the comparison), "a minimum clearance of 0.2"."""
+between the negation and the comparison), "a minimum clearance of 0.2", "a clearance of 0.2"."""
 
 
 def whole_words(text: str) -> str:
@@ -216,9 +218,11 @@ the lamp" ("turn right at the lamp", "move right past it", "to the right of" sta
 ENDING_UP = re.compile(r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?)\s+up\b", re.I)
 """Phrasal verbs of finishing: "end up 0.8 further front", "wrap up with a slower finish" ask no up."""
 TO_AND_FRO = re.compile(
-    r"\b(?:back\s+and\s+forth|forth\s+and\s+back|to\s+and\s+fro|side\s+to\s+side)\b", re.I
+    r"\b(?:back\s+and\s+forth|forth\s+and\s+back|to\s+and\s+fro|side\s+to\s+side|left\s+and\s+right"
+    r"|right\s+and\s+left|up\s+and\s+down|down\s+and\s+up)\b",
+    re.I,
 )
-"""A swing both ways ("weave back and forth"): no one direction."""
+"""A swing both ways ("weave back and forth", "left and right", "up and down"): no one direction."""
 REVERSING = re.compile(
     r"\b(?:revers(?:e|es|ed|ing)|retreat(?:s|ed|ing)?)\b"
     r"(?!\s+(?:the|its|this|that|it|them|order|direction|course|sequence|waypoints?|points?)\b)",

@@ -257,7 +257,10 @@ def test_a_swing_both_ways_is_no_direction_and_no_break(words):
 
 @pytest.mark.parametrize(
     "instruction",
-    ["Hold a buffer of 0.2 from the crate and speed up a little.", "Leave the crate a clearance of 0.2 and go a bit faster."],
+    [
+        "Hold a buffer of 0.2 from the crate and speed up a little.",
+        "Leave the crate a clearance of 0.2 and go a bit faster.",
+    ],
 )
 def test_a_clearance_said_as_a_noun_is_kept_with_avoid(instruction):
     assert "t = avoid(t, detect_objects('crate'), 0.2)" in steps_after(instruction, "t = scale_speed(t, 1.2)")

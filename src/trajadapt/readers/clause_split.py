@@ -31,6 +31,7 @@ from collections.abc import Sequence
 
 from trajadapt.readers.words import (
     PLACE_WORDS,
+    TO_AND_FRO,
     asked_kinds,
     asks_distance,
     names_in,
@@ -39,13 +40,13 @@ from trajadapt.readers.words import (
 )
 
 BREAKS = re.compile(
-    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and(?!\s+(?:forth|fro)\b)(?!(?<=\bleft and)\s+right\b)"
-    r"(?!(?<=\bright and)\s+left\b)(?!(?<=\bup and)\s+down\b)(?!(?<=\bdown and)\s+up\b)|then|but|also"
+    r"(?:[,;:!?]|\.(?!\d))|\b(?:and then|and also|and|then|but|also"
     r"|(?<!\ba )(?<!\blittle )(?<!\bshort )(?<!\bgood )while)\b",
     re.I,
 )
 """Where one request may end and the next begin: punctuation (not a decimal point) and joining words
-("back and forth", "to and fro", "left and right", "up and down" join no requests)."""
+(not inside a swing both ways, ``words.TO_AND_FRO``: "back and forth", "left and right" join no
+requests)."""
 
 LEAD_INS = re.compile(
     r"^(?:after|once|when|whenever|if|while|as|before|upon|until|as soon as|at the end|at the start"
@@ -100,7 +101,10 @@ def _pieces(instruction: str) -> list[tuple[str, str]]:
     """(what joined it to the piece before, the piece) for each non-empty piece."""
     pieces: list[tuple[str, str]] = []
     position, joiner = 0, ""
+    swings = [found.span() for found in TO_AND_FRO.finditer(instruction)]
     for found in BREAKS.finditer(instruction):
+        if any(start < found.start() < end for start, end in swings):
+            continue
         piece = instruction[position : found.start()].strip()
         if piece:
             pieces.append((joiner, piece))

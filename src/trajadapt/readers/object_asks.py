@@ -64,9 +64,8 @@ from trajadapt.code_parse import (
     step_on_object,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, object_asks
+from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, ends_at_the_place, object_asks
 from trajadapt.readers.paces import speed_factor
-from trajadapt.readers.stop_words import ends_at_the_place
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
     asks_distance,

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.stop_words import ENDING_THERE
 from trajadapt.readers.words import (
     AWAY,
     CLOSER,
@@ -20,6 +21,7 @@ from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
     NUMBER_TEXT,
     PLACE_WORDS,
+    SENTENCE_END,
     SLOWER,
     asks_distance,
     asks_pace,
@@ -110,3 +112,26 @@ def asked_words(ask: ObjectAsk) -> str:
         "away": "to keep further from",
         "by": "to pass close by",
     }[ask.relation]
+
+
+PLACE_OF_ITS_OWN = re.compile(
+    r"\b(?:goal|destination|same|original|usual|(?:at|on|by|beside|near|in|into|onto)\s+(?:the|a|an)\b"
+    r"|next\s+to\s+(?:the|a|an)\b|end\s+of)",
+    re.I,
+)
+"""Words that give an ending a place of its own: "finish at the same goal", "stop at the end"."""
+PIECES = re.compile(r",|\b(?:and|then|but|before|after)\b", re.I)
+
+
+def ends_at_the_place(clause: str, words: str) -> bool:
+    """Whether the path ends at the place ``clause`` names.
+
+    It does when the clause says so itself, or a piece after it in its sentence ends with no place of
+    its own ("swing by the lamp and stop there", "on getting near the scissors, stop"; not "detour by
+    the bed, but finish at the same goal").
+    """
+    if ENDING_THERE.search(clause):
+        return True
+    found = words.find(clause)
+    rest = SENTENCE_END.split(words[found + len(clause) :] if found >= 0 else "")[0]
+    return any(ENDING_THERE.search(p) and not PLACE_OF_ITS_OWN.search(p) for p in PIECES.split(rest))

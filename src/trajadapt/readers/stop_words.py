@@ -36,25 +36,3 @@ ENDING_THERE = re.compile(
     rf"{STOPPING.pattern}|\b(?:end\w*|finish\w*|arriv\w*|land\w*|park\w*|destination|goal)\b", re.I
 )
 """Words that may end the path at a place: a stop, "end", "finish", "arrive", "land", "park"."""
-PLACE_OF_ITS_OWN = re.compile(
-    r"\b(?:goal|destination|same|original|usual|(?:at|on|by|beside|near|in|into|onto)\s+(?:the|a|an)\b"
-    r"|next\s+to\s+(?:the|a|an)\b|end\s+of)",
-    re.I,
-)
-"""Words that give an ending a place of its own: "finish at the same goal", "stop at the end"."""
-PIECES = re.compile(r",|\b(?:and|then|but|before|after)\b", re.I)
-SENTENCE_END = re.compile(r"[;!?]|\.(?!\d)")
-
-
-def ends_at_the_place(clause: str, words: str) -> bool:
-    """Whether the path ends at the place ``clause`` names.
-
-    It does when the clause says so itself, or a piece after it in its sentence ends with no place of
-    its own ("swing by the lamp and stop there", "on getting near the scissors, stop"; not "detour by
-    the bed, but finish at the same goal").
-    """
-    if ENDING_THERE.search(clause):
-        return True
-    found = words.find(clause)
-    rest = SENTENCE_END.split(words[found + len(clause) :] if found >= 0 else "")[0]
-    return any(ENDING_THERE.search(p) and not PLACE_OF_ITS_OWN.search(p) for p in PIECES.split(rest))

@@ -17,7 +17,7 @@ def program(*steps: str) -> str:
 @pytest.mark.parametrize(
     ("words", "steps", "added"),
     [
-        ("head left while easing to a halt at the end", ("t = speed_profile(t, 'decelerate', start=0.7)",),
+        ("head left while easing to a halt at the end", ("t = speed_profile(t, 'decelerate', start=0.6)",),
          "t = shift(t, 'left')"),
         ("hug the lamp and climb slightly", ("t = move_closer(t, detect_objects('lamp'))",),
          "t = shift(t, 'up', 'slightly')"),

@@ -27,9 +27,9 @@ def program(*steps: str) -> str:
         ("from beginning to end keep the speed at 0.2", "t = set_speed(t, 0.2)"),  # no part: all of it
         ("with the pace set to .3 around the crate", "t = set_speed(t, 0.3, near=detect_objects('crate'))"),
         # slower towards the goal or the end, decelerate, accelerate: profiles
-        ("ease off as you come up to the destination", "t = speed_profile(t, 'decelerate', start=0.7)"),
-        ("ease off towards the end", "t = speed_profile(t, 'decelerate', start=0.7)"),
-        ("decelerate", "t = speed_profile(t, 'decelerate', start=0.7)"),
+        ("ease off as you come up to the destination", "t = speed_profile(t, 'decelerate', start=0.6)"),
+        ("ease off towards the end", "t = speed_profile(t, 'decelerate', start=0.6)"),
+        ("decelerate", "t = speed_profile(t, 'decelerate', start=0.6)"),
         ("accelerate as you go", "t = speed_profile(t, 'accelerate')"),
         # faster or slower: the stated factor, else the phrase table's for the amount word
         ("crawl past the floor lamp", "t = scale_speed(t, 0.65, near=detect_objects('floor lamp'))"),
@@ -223,7 +223,7 @@ def test_a_pace_of_the_second_half_a_step_may_make_is_left_alone(steps: tuple[st
 @pytest.mark.parametrize("clause", ["then come to a dead stop there", "come to a standstill at the end"])
 def test_a_stop_at_the_end_runs_the_speed_down_to_it(clause: str) -> None:
     pace = asked_pace(clause, NAMES)
-    assert pace is not None and pace.step == "t = speed_profile(t, 'decelerate', start=0.7)"
+    assert pace is not None and pace.step == "t = speed_profile(t, 'decelerate', start=0.6)"
 
 
 @pytest.mark.parametrize("step", ["t = stop_at(t, detect_objects('crate'))", "t = wait(t, 'middle', 5)"])

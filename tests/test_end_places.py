@@ -67,12 +67,12 @@ def test_a_missing_end_step_is_added_after_the_moves_and_before_the_speed_steps(
     steps = steps_after(
         "Bring it closer to the box and conclude at the lamp, slowing down towards the end",
         "t = move_closer(t, detect_objects('box'))",
-        "t = speed_profile(t, 'decelerate', start=0.7)",
+        "t = speed_profile(t, 'decelerate', start=0.6)",
     )
     assert steps == [
         "t = move_closer(t, detect_objects('box'))",
         "t = reach(t, detect_objects('lamp'))",
-        "t = speed_profile(t, 'decelerate', start=0.7)",
+        "t = speed_profile(t, 'decelerate', start=0.6)",
     ]
 
 

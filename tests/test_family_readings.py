@@ -61,7 +61,7 @@ def test_no_stop_where_the_words_only_name_one(words):
     ],
 )
 def test_a_stop_at_the_end_runs_the_speed_down(instruction):
-    assert "t = speed_profile(t, 'decelerate', start=0.7)" in steps_after(
+    assert "t = speed_profile(t, 'decelerate', start=0.6)" in steps_after(
         instruction, "t = shift(t, 'right', 'a little')"
     )
 
@@ -224,7 +224,7 @@ def test_a_stop_at_the_end_taken_to_another_clauses_object_is_the_ends(instructi
     )
     assert steps == [
         "t = move_away(t, detect_objects('crate'))",
-        "t = speed_profile(t, 'decelerate', start=0.7)",
+        "t = speed_profile(t, 'decelerate', start=0.6)",
     ]
 
 

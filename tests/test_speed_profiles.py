@@ -39,7 +39,7 @@ def test_the_one_whole_path_scale_becomes_the_profile() -> None:
         ["move forward and ease off to a standstill"],
         NAMES,
     )
-    assert code == program("t = shift(t, 'front')", "t = speed_profile(t, 'decelerate', start=0.7)")
+    assert code == program("t = shift(t, 'front')", "t = speed_profile(t, 'decelerate', start=0.6)")
     assert "down to a stop" in notes[0]
 
 

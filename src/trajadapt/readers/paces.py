@@ -9,7 +9,7 @@ from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import FASTER, NUMBER_TEXT, NUMBER_WORDS, SLOWER, SPEED_WORDS, amount_size
 from trajadapt.skills.speed import SPEED_FACTORS
 
-STOP_RAMP_START = 0.7
+STOP_RAMP_START = 0.6
 """Where a slowing to a stop begins: over the last 30% of the path, as the prompt's own example
 ("slow down gradually towards the goal" -> ``speed_profile(t, 'decelerate', start=0.7)``)."""
 

@@ -2,8 +2,8 @@
 
 "Head toward the front and ease off until you come to a complete stop" came back as
 ``scale_speed(t, 0.65)``: slower everywhere, and never stopping. Slowing until a stop is a profile,
-``speed_profile(t, 'decelerate', start=0.7)`` (down to 0 at the goal over the last 30%, as the
-prompt's own example); speeding up from rest is ``speed_profile(t, 'accelerate')``. A clause asks
+``speed_profile(t, 'decelerate', start=0.6)`` (down to 0 at the goal over the last 40%,
+``paces.STOP_RAMP_START``); speeding up from rest is ``speed_profile(t, 'accelerate')``. A clause asks
 the first when it asks slower and says where the slowing ends ("until you come to a complete
 stop", "down to zero", "till the speed reaches 0", "to a standstill"), the second when it asks
 faster from a standstill ("from rest", "from zero"), said in the clause or the one before it;

@@ -15,17 +15,21 @@ factor of the prompt's phrase table for the words of the speed's own clause ('a 
 lot'), in the direction the words ask when they ask only one ("pick up the pace" with a factor
 below 1), else in the one the model chose; "by 20%", "twice", "half as fast" are stated factors, and
 a factor the model made up where the speed clause states one ("go slower by half" answered with
-0.45) becomes the stated one. A review note says so.
+0.45) becomes the stated one. Where a slowing down to a stop begins (``speed_profile(t,
+'decelerate', start=0.7)``: the prompt's example) is a share of the path: one the words never give
+(as a share, a percentage or a part said by its fraction, "the last third") becomes the product's stop
+ramp (``readers.paces.STOP_RAMP_START``). A review note says so.
 """
 
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
-from trajadapt.readers.paces import speed_factor, stated_factor
+from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
 from trajadapt.skills import SKILLS
 
@@ -55,6 +59,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if changed is None and (calibrated := _calibrate_factor(line, numbers, words)):
             changed, stated = calibrated
             used = "the factor the words state" if stated else used
+        if changed is None and (ramp := _stop_ramp(line, numbers, words)):
+            changed, what, used = ramp, "share of the path", "the product's stop ramp"
         if changed is not None and changed != line.strip():
             notes.append(
                 f"`{line.strip()}` -> `{changed}`: the instruction gives no such {what}, so {used} is used"
@@ -142,6 +148,33 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
         argument.value = stated or speed_factor(words, asked)
         return ast.unparse(tree), stated is not None
     return None
+
+
+def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:
+    """The line with a slowing to a stop started at the product's stop ramp, where the words give no share."""
+    found = _skill_call(line)
+    if found is None or found[2] != "speed_profile" or SHARE_WORDS.search(words):
+        return None
+    tree, call, _ = found
+    kind = call.args[1] if len(call.args) > 1 else None
+    start = next(
+        (k.value for k in call.keywords if k.arg == "start"), call.args[3] if len(call.args) > 3 else None
+    )
+    if not (
+        isinstance(kind, ast.Constant) and kind.value == "decelerate" and isinstance(start, ast.Constant)
+    ):
+        return None
+    value = start.value
+    if not isinstance(value, int | float) or isinstance(value, bool) or value in (0, STOP_RAMP_START):
+        return None
+    if any(abs(value - share) <= 1e-6 for n in numbers for share in (n, 1 - n, n / 100, 1 - n / 100)):
+        return None
+    start.value = STOP_RAMP_START
+    return ast.unparse(tree)
+
+
+SHARE_WORDS = re.compile(r"\b(?:halfway|half|thirds?|quarters?|fifths?|tenths?)\b|%|\bper\s*cent\b", re.I)
+"""Words that say a share of the path: where they are, a slowing's start may be the user's."""
 
 
 def _drop_trailing_defaults(call: ast.Call, function: object) -> None:

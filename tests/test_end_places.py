@@ -129,3 +129,43 @@ def test_a_stop_beside_the_object_comes_after_the_speed_steps() -> None:
         "keep a steady 0.3 and wind up close to the lamp", "t = set_speed(t, 0.3)", "t = shift(t, 'left')"
     )
     assert steps[-1] == "t = stop_at(t, detect_objects('lamp'))"
+
+
+SLOWING_TO_REST = "t = speed_profile(t, 'decelerate', start=0.6)"
+
+
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        ("land on the box and stay stationary there", ["t = reach(t, detect_objects('box'))"]),
+        ("come to a halt right on the lamp", ["t = stop_at(t, detect_objects('lamp'))"]),
+        ("bring the arm to rest at the red cup", []),
+        ("finish at the chair, motionless", ["t = shift(t, 'left')"]),
+        ("wrap things up on the box and come to a full rest", []),
+    ],
+)
+def test_an_end_the_words_leave_at_rest_ends_there_slowing_to_a_stop(words: str, steps: list[str]) -> None:
+    after = steps_after(words, *steps)
+    assert any(step.startswith("t = reach(") for step in after)
+    assert after[-1] == SLOWING_TO_REST and not any("stop_at" in step for step in after)
+
+
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        ("finish at the lamp, then slow down near the box", ["t = reach(t, detect_objects('lamp'))"]),
+        ("rather than stopping early, end at the chair", []),  # the stop is not at the end place
+        ("end at the lamp without moving the start", []),
+    ],
+)
+def test_an_end_with_no_rest_asked_keeps_its_pace(words: str, steps: list[str]) -> None:
+    assert SLOWING_TO_REST not in steps_after(words, *steps)
+
+
+def test_an_end_already_at_rest_gets_no_second_stop() -> None:
+    steps = steps_after(
+        "touch down on the box and come to a standstill",
+        "t = reach(t, detect_objects('box'))",
+        SLOWING_TO_REST,
+    )
+    assert steps == ["t = reach(t, detect_objects('box'))", SLOWING_TO_REST]

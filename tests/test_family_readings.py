@@ -39,6 +39,8 @@ def steps_after(instruction: str, *steps: str) -> list[str]:
         "keep rolling until it stops",
         "finish by settling to rest",
         "come to a dead standstill by the end",
+        "it should come to a quiet rest",
+        "bring the arm to a gentle rest",
     ],
 )
 def test_a_stop_is_read_in_many_words(words):
@@ -46,7 +48,8 @@ def test_a_stop_is_read_in_many_words(words):
 
 
 @pytest.mark.parametrize(
-    "words", ["go to the stop sign", "apply it to the rest of the path", "start from rest"]
+    "words",
+    ["go to the stop sign", "apply it to the rest of the path", "start from rest", "get to a rest area"],
 )
 def test_no_stop_where_the_words_only_name_one(words):
     assert not COMING_TO_REST.search(words)

@@ -7,20 +7,25 @@ object, ``stop_at(t, chair)`` (as "stop near the stinkhorn" is read). A small mo
 words with a step for another job (a side kept, the end part shifted, the object put in a pass over
 a list) or with no step of the object at all.
 
-A clause asks an end place (``asked_end``) when an ending verb is followed by a word of place and
-then by the one scene object the rest of the clause names ("finish right at", "end up beside",
-"arrive at", "come to rest on"), or when it names the object as the end ("make X your end point",
-"use X as the final position", "the end point should be X"), or goes to it to finish ("down onto the
-soap to finish", "at the end go to the box"). An ending word used as a noun ("at
-the end near the box") asks none; neither does "stop at" (``stop_at``'s own words, read as the
-model reads them).
+A clause asks an end place (``asked_end``) when an ending verb (a word of coming to rest too: "come
+to a halt", "bring the arm to rest") is followed by a word of place and then by the one scene object
+the rest of the clause names ("finish right at", "end up beside", "arrive at", "come to rest on"),
+or when it names the object as the end ("make X your end point", "use X as the final position", "the
+end point should be X"), or goes to it to finish ("down onto the soap to finish", "at the end go to
+the box"). An ending word used as a noun ("at the end near the box") asks none; neither does "stop
+at" (``stop_at``'s own words, read as the model reads them).
 
 Unless a step already ends there (``reach`` or ``append_segment`` of the object; ``stop_at`` of it
 for an end beside it), the steps written for the clause leave the code: a step on the object alone
 when no other clause names the object, and the object's entry in a step's list of objects; the
 end step is added after the last step that moves the path (speed steps after it stay after it;
 ``stop_at``, which leaves the robot at rest there, goes after them all). Code that is not made of
-skill calls alone is left alone. A review note says what changed and why.
+skill calls alone is left alone. An end at the object that the words leave at rest (its clause, or
+the next one where it names no object, says a word of stopping: "and be at rest when it gets
+there", "fully stopped there", "not moving at the end") also slows to a stop, ``speed_profile(t,
+'decelerate', start=0.6)`` last, as a stop at the end is read, unless a step already ends at rest
+(``reach`` keeps the speed: "finish right at the quill and come to a complete rest there" arrived at
+full speed). A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -42,6 +47,8 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.paces import STOP_RAMP_START
+from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
 from trajadapt.readers.words import longest_names, names_in
 from trajadapt.skills import SKILL_NAMES
 
@@ -50,8 +57,10 @@ _ENDING = (
     rf"\b{_NOT_A_NOUN}(?:end(?:s|ed|ing)?|finish(?:es|ed|ing)?|terminat\w*|conclud\w*|arriv\w*"
     r"|land(?:s|ed|ing)?|settl\w*|wrap(?:s|ped|ping)?\s+(?:it\s+|things\s+)?up|wind(?:s|ing)?\s+up|wound\s+up"
     r"|come\s+to\s+rest|comes\s+to\s+rest|finish(?:es|ed|ing)?\s+up|end(?:s|ed|ing)?\s+up"
-    r"|set(?:s|ting)?\s+down|touch(?:es|ed|ing)?\s+down|park(?:s|ed|ing)?|pull(?:s|ed|ing)?\s+up)"
-    r"(?:\s+(?:the\s+)?(?:path|route|trajectory|motion|run|flight|drive|journey|movement))?"
+    r"|set(?:s|ting)?\s+down|touch(?:es|ed|ing)?\s+down|park(?:s|ed|ing)?|pull(?:s|ed|ing)?\s+up"
+    rf"|{COMING_TO_REST.pattern})"
+    r"(?:\s+(?:with\s+)?(?:the\s+|its\s+|your\s+)?(?:path|route|trajectory|motion|run|flight|drive|journey"
+    r"|movement|robot|drone|arm|gripper|end\s+effector|tool|vehicle|it))?"
     r"(?:\s+(?:exactly|right|directly|precisely|just|squarely|somewhere))?\s+"
 )
 AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
@@ -91,6 +100,7 @@ class AskedEnd:
     clause: str
     place: str
     skill: str  # 'reach' (at the object) or 'stop_at' (where the path passes nearest it)
+    at_rest: bool = False  # the words leave the robot at rest there
 
 
 def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
@@ -127,7 +137,7 @@ def _one_name(text: str, names: list[str]) -> str | None:
 
 
 def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
-    """``code`` ending at each place the words ask it to end at (see the module)."""
+    """``code`` ending at each place the words ask it to end at, at rest where they ask (see the module)."""
     names = list(names)
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
@@ -135,14 +145,29 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
         return code, []
     clauses = [clause for words in asked for clause in split_clauses(words, names)]
     ends = [end for clause in clauses if (end := asked_end(clause, names)) is not None]
-    if len(ends) != 1 or any(_ends_there(line, ends[0]) for line in lines):
+    if len(ends) != 1:
         return code, []
-    end = ends[0]
+    end, variable = ends[0], program[1]
+    notes: list[str] = []
+    if not any(_ends_there(line, end) for line in lines):
+        lines, notes = _ended_there(lines, end, clauses, variable)
+    if end.skill == "reach" and _rests_there(end, clauses, names) and not _ends_at_rest(lines):
+        step = f"{variable} = speed_profile({variable}, 'decelerate', start={STOP_RAMP_START})"
+        at = after_last_step(lines, SKILL_NAMES)
+        lines = [*lines[:at], step, *lines[at:]]
+        said = end.clause.strip()
+        notes.append(f"added `{step}`: the words ask the robot at rest at the {end.place} ({said!r})")
+    return "\n".join(lines), notes
+
+
+def _ended_there(
+    lines: list[str], end: AskedEnd, clauses: list[str], variable: str
+) -> tuple[list[str], list[str]]:
+    """``lines`` with the step that ends the path at ``end`` (and less the steps written for it)."""
     others = " ".join(clause for clause in clauses if clause != end.clause)
     notes: list[str] = []
     if not names_in(others, [end.place]):
         lines, notes = _without_steps_for(lines, end)
-    variable = program[1]
     step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
     at = after_last_step(
         lines, SKILL_NAMES if end.skill == "stop_at" else MOVES_THE_PATH
@@ -150,7 +175,25 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
-    return "\n".join([*lines[:at], step, *lines[at:]]), notes
+    return [*lines[:at], step, *lines[at:]], notes
+
+
+def _rests_there(end: AskedEnd, clauses: list[str], names: list[str]) -> bool:
+    """Whether the end's clause, or the next one where it names no object, leaves the robot at rest."""
+    index = clauses.index(end.clause)
+    after = clauses[index + 1 : index + 2]
+    said = [end.clause, *(clause for clause in after if not names_in(clause, names))]
+    return any(AT_REST.search(clause) for clause in said)
+
+
+def _ends_at_rest(lines: list[str]) -> bool:
+    """Whether a step leaves the robot at rest at the end: a ``stop_at`` or a slowing to 0."""
+    for line in lines:
+        call = call_of(line, ("stop_at", "speed_profile"))
+        kind = call.args[1] if call is not None and len(call.args) > 1 else None
+        if called_name(line) == "stop_at" or (isinstance(kind, ast.Constant) and kind.value == "decelerate"):
+            return True
+    return False
 
 
 def _ends_there(line: str, end: AskedEnd) -> bool:

@@ -13,16 +13,16 @@ import re
 COMING_TO_REST = re.compile(
     r"\b(?:(?:to|into|until|till)\s+(?:you\s+|it\s+)?(?:comes?\s+to\s+|reach(?:es)?\s+|gets?\s+to\s+)?"
     r"(?:a\s+|an\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"
-    r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+rest\b"
+    r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+(?:a\s+(?:\w+\s+)?)?rest\b(?!\s+(?:area|stop|room|of)\b)"
     r"|(?:until|till)\s+the\s+\w+\s+(?:comes?\s+to|reach(?:es)?|gets?\s+to)\s+(?:a\s+)?(?:\w+\s+)?(?:stop|standstill|halt)\b"
     r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts)"
     r"|\b(?:end|ends|ending|ended|finish\w*)\s+(?:at|in|with)\s+(?:a\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b)",
     re.I,
 )
 """Words that end a motion at rest: "to a stop", "roll to a gradual stop", "glide to a halt", "to a
-standstill", "until it stops", "come to rest", "bring it to rest", "ends at a full stop" (one
-vocabulary for every reader that reads a stop: the readers of paces, profiles, pauses and unasked
-steps)."""
+standstill", "until it stops", "come to rest", "come to a complete rest", "bring it to rest", "ends
+at a full stop" (one vocabulary for every reader that reads a stop: the readers of paces, profiles,
+pauses and unasked steps)."""
 STOPPING = re.compile(
     rf"{COMING_TO_REST.pattern}|\b(?:stop\w*|halt\w*|standstill|stand\w*\s+still|at\s+rest\b|motionless"
     r"|stationary|terminat\w*)",
@@ -36,3 +36,9 @@ ENDING_THERE = re.compile(
     rf"{STOPPING.pattern}|\b(?:end\w*|finish\w*|arriv\w*|land\w*|park\w*|destination|goal)\b", re.I
 )
 """Words that may end the path at a place: a stop, "end", "finish", "arrive", "land", "park"."""
+AT_REST = re.compile(
+    rf"{COMING_TO_REST.pattern}|\b(?:stop(?:s|ped|ping)?|halt(?:s|ed|ing)?|standstill|stand\w*\s+still|at\s+rest"
+    r"|motionless|stationary|still\s+there)\b|\bnot\s+moving\b(?!\s+(?:the|its|it|either|both)\b)",
+    re.I,
+)
+"""Words that leave the robot at rest where it ends: a word of stopping, "not moving", "still there"."""

@@ -85,3 +85,28 @@ def test_a_whole_path_shift_keeps_its_start_so_only_the_goal_is_put_back() -> No
 def test_a_move_of_the_other_end_keeps_this_one() -> None:
     written = ("t = shift_goal(t, 'left', 0.15)", "t = scale_speed(t, 0.65)")
     assert steps_after("move the goal 0.15 left without touching the start", *written) == list(written)
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "hold a moment by the box, then continue on to the original end point",
+        "after the pause keep going towards the same destination",
+        "wait near the lamp and finish up as it did before",
+        "brush past the lamp, keeping the same goal",  # past an object, not past the goal
+    ],
+)
+def test_a_going_on_towards_the_kept_goal_goes_on_nowhere_past_it(words: str) -> None:
+    assert steps_after(words, "t = wait(t, 'middle', 4)", "t = extend(t)") == ["t = wait(t, 'middle', 4)"]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "keep the same goal, then carry on beyond the end for 0.1",
+        "with the goal where it is, go on past it 0.2 to the left",
+        "keep the goal as it is and keep going after reaching it",
+    ],
+)
+def test_a_going_on_past_the_kept_goal_stays(words: str) -> None:
+    assert "t = extend(t)" in steps_after(words, "t = extend(t)")

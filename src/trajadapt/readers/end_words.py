@@ -38,10 +38,16 @@ KEPT_ENDS = (
         rf"|regular|unchanged)\s+{_ENDS}",
         re.I,
     ),
+    re.compile(
+        r"\b(?P<end>finish|end)(?:s|ed|ing)?\s+(?:(?:it|up|off|exactly|just|the\s+same)\s+)*"
+        r"as\s+(?:before|(?:it\s+)?(?:did|does|was|used\s+to)\b)",
+        re.I,
+    ),
 )
 """Words that keep an end of the path where it is: "keeping the start and end positions the same",
 "don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
-"head to the same endpoint", "on to the usual end spot", "keeping the same start"."""
+"head to the same endpoint", "on to the usual end spot", "keeping the same start", "then finish
+exactly as before"."""
 
 
 def kept_ends(requests: Sequence[str]) -> set[str]:

@@ -12,8 +12,9 @@ the endpoints pinned", "don't move the start or the goal"). For each kept end:
   ``reach(t, detect_objects('goal'))``, the start with ``pass_through(t, detect_objects('start'),
   0)`` (both bend the path back smoothly, and do nothing where the end did not move). A program that
   goes on past the goal (``extend``, ``append_segment``) keeps its goal as moved where the words ask
-  to go on ("after the goal", "past the end"); where they do not ("then head to the same endpoint"),
-  such a step moves the kept goal and is left out.
+  to go on ("after the goal", "past the end"); where they do not ("then head to the same endpoint",
+  "then carry on to the same goal": a going-on towards the kept goal), such a step moves the kept
+  goal and is left out.
 
 Code that is not made of skill calls alone is left alone. A review note says what changed and why.
 """
@@ -40,12 +41,23 @@ PUT_BACK = {
 }
 """The step that puts each end back where the original path has it."""
 PAST_THE_GOAL = ("extend", "append_segment")
+_GOING_ON_VERB = r"continu\w*|carry\w*\s+on|keep\w*\s+(?:going|moving|on)|go(?:es|ing)?\s+on"
 GOING_ON = re.compile(
-    r"\b(?:after|past|beyond|further|farther|more|another|continu\w*|carry\w*\s+on|keep\w*\s+(?:going|moving|on)"
-    r"|go(?:es|ing)?\s+on|onwards?|extend\w*|lengthen\w*|prolong\w*|append\w*)\b",
+    rf"\b(?:(?:after|past|beyond)(?=\s+(?:\w+\s+){{0,2}}?(?:goal|end\w*|destination|finish\w*|target|final|there))"
+    rf"|further|farther|more|another|{_GOING_ON_VERB}|onwards?|extend\w*|lengthen\w*|prolong\w*|append\w*)\b",
     re.I,
 )
-"""Words that may ask the path to go on past its goal: a going-on beside a kept goal is then kept."""
+"""Words that may ask the path to go on past its goal ("after the goal", "keep going", "0.1 further"): a
+going-on beside a kept goal is then kept. "Past", "after" and "beyond" count before an end word only
+("brushes right past the ear" goes on nowhere)."""
+RESUMING = re.compile(
+    rf"\b(?:{_GOING_ON_VERB})\s+(?:on\s+)?(?:to|towards?|into|up\s+to)\s+(?:the\s+|its\s+|your\s+)?"
+    r"(?:same|original|usual|old|planned|intended|existing|normal|regular|unchanged)\s+(?:\w+\s+)?"
+    r"(?:goal|end\w*|destination|finish\w*|target|final\s+\w+)",
+    re.I,
+)
+"""A going-on whose destination is the kept goal ("then carry on to the same goal", "continue on to
+the original end point"): the path resumes towards its goal and goes on nowhere past it."""
 LEAVES = {
     "start": ("middle", "second half", "end", "final", "goal"),
     "goal": ("middle", "first half", "start", "beginning"),
@@ -66,7 +78,7 @@ def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         for line in [x for x in lines if called_name(x) == OWN_MOVE[end]]:
             lines.remove(line)
             notes.append(f"left out `{line.strip()}`: the words keep the {end} where it is")
-    if "goal" in kept and not any(GOING_ON.search(words) for words in asked):
+    if "goal" in kept and not any(GOING_ON.search(RESUMING.sub(" ", words)) for words in asked):
         for line in [x for x in lines if called_name(x) in PAST_THE_GOAL]:
             lines.remove(line)
             notes.append(f"left out `{line.strip()}`: the words keep the goal and go on nowhere past it")

@@ -268,3 +268,24 @@ def test_a_swing_both_ways_is_no_direction_and_no_break(words):
 )
 def test_a_clearance_said_as_a_noun_is_kept_with_avoid(instruction):
     assert "t = avoid(t, detect_objects('crate'), 0.2)" in steps_after(instruction, "t = scale_speed(t, 1.2)")
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "speed the whole run up",
+        "slow the final approach down near the box",
+        "ramp the pace up",
+        "slow the last couple of metres down",
+    ],
+)
+def test_a_pace_verb_around_its_object_asks_no_direction(words):
+    assert said_directions(words) == set()
+
+
+@pytest.mark.parametrize(
+    ("words", "direction"),
+    [("ease the gripper down onto the plate", "down"), ("slow it, and then go up", "up")],
+)
+def test_a_direction_beside_a_pace_verb_stays(words, direction):
+    assert said_directions(words) == {direction}

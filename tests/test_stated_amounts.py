@@ -61,3 +61,38 @@ def test_a_vague_or_missing_amount_becomes_the_stated_one_with_a_note(step: str,
 def test_steps_with_a_number_another_direction_or_a_twin_stay(step: str) -> None:
     code = CODE.format(step=step)
     assert use_stated_amounts(code, ["climb upwards by 0.5"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "expected"),
+    [
+        (
+            "drift a little to the left, and past the goal carry on 0.3 further forward",
+            "t = shift(t, 'left', 0.3)",
+            "t = shift(t, 'left', 'a little')",
+        ),
+        (
+            "nudge the start 0.2 up; the route should sit lower",
+            "t = shift(t, 'down', 0.2)",
+            "t = shift(t, 'down')",
+        ),
+    ],
+)
+def test_a_number_the_words_give_to_another_direction_is_not_this_steps(words, step, expected):
+    code, notes = use_stated_amounts(CODE.format(step=step), [words])
+    assert code.splitlines()[1] == expected and "not" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        (
+            "once at the goal, back up by 1.5",
+            "t = shift(t, 'up', 1.5)",
+        ),  # 'up' is said nowhere: the step for 'back'
+        ("go left by 0.2, then up by 0.2", "t = shift(t, 'up', 0.2)"),  # the number is given twice
+        ("go up 0.1 and 0.1 to the left", "t = shift(t, 'up', 0.1)"),
+    ],
+)
+def test_a_number_the_words_may_give_to_this_step_stays(words, step):
+    assert use_stated_amounts(CODE.format(step=step), [words])[0].splitlines()[1] == step

@@ -7,7 +7,12 @@ number given to a direction (``clause_amounts.direction_amounts``: "by 0.2", "0.
 direction its amount; the one directional step in that direction (``shift``, ``shift_goal``,
 ``shift_start``, ``shift_part``) whose amount is a word or missing gets the number. A step with a
 number of its own keeps it (``unstated_amounts`` judges numbers), and a clause with two directions
-or two numbers is left alone. A review note says so.
+or two numbers is left alone. A number the words give only to another direction ("go a bit higher
+through the middle, and after the goal continue 0.1 further back" answered with ``shift(t, 'up',
+0.1)``) is borrowed: the step gets the amount word of its own direction's clause, or the default (a
+step in a direction the words never say is left to the readers of directions: "back up by 1.5"
+answered ``shift(t, 'up', 1.5)`` is the step for "back").
+A review note says so.
 """
 
 from __future__ import annotations
@@ -17,14 +22,18 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
 from trajadapt.readers.clause_amounts import direction_amounts
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import intensity_word, said_directions, stated_numbers
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
 
 
 def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with each direction's stated amount in its one vague step (see the module docstring)."""
-    amounts = direction_amounts(" ".join(asked))
-    lines, notes = code.splitlines(), []
+    words = " ".join(asked)
+    amounts = direction_amounts(words)
+    code, notes = _without_borrowed_numbers(code, words, amounts)
+    lines = code.splitlines()
     for direction, amount in amounts.items():
         vague = [i for i, line in enumerate(lines) if _vague_step(line) == direction]
         if len(vague) != 1:
@@ -52,3 +61,29 @@ def _vague_step(line: str) -> str | None:
     if amount is not None and not (isinstance(amount, ast.Constant) and isinstance(amount.value, str | None)):
         return None
     return direction_argument(call)
+
+
+def _without_borrowed_numbers(code: str, words: str, amounts: dict[str, float]) -> tuple[str, list[str]]:
+    """``code`` with a directional step's number, given once by the words to another direction, made vague."""
+    numbers, said = stated_numbers(words), said_directions(words)
+    lines, notes = code.splitlines(), []
+    for index, line in enumerate(lines):
+        call = call_of(line, DIRECTIONAL_STEPS)
+        direction = direction_argument(call)
+        amount = call.args[2] if call is not None and len(call.args) > 2 else None
+        if call is None or direction not in said - set(amounts) or not isinstance(amount, ast.Constant):
+            continue
+        given = amount.value
+        owners = [d for d, n in amounts.items() if n == given and d != direction]
+        if not isinstance(given, int | float) or len(owners) != 1 or numbers.count(float(given)) != 1:
+            continue
+        own = [c for c in split_clauses(words) if direction in said_directions(c)]
+        amount.value = intensity_word(own[0]) if len(own) == 1 else None
+        if amount.value is None and len(call.args) == 3:
+            call.args.pop()  # the skill's default amount
+        changed = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"
+        notes.append(
+            f"`{line.strip()}` -> `{changed}`: the words give that number to {owners[0]}, not {direction}"
+        )
+        lines[index] = in_place_of(line, changed)
+    return "\n".join(lines), notes

@@ -77,13 +77,15 @@ reached"."""
 PACE_PHRASES = re.compile(
     r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)"
     r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this)\s+)?(?:down|up)\b"
+    r"|\b(?:slow|slowing|speed|speeding|ramp|ramping)\s+(?:the|your|its|this|that)"
+    r"(?:\s+(?!and\b|then\b|to\b|so\b)[a-z]+){1,4}?\s+(?:down|up)\b"
     r"|\b(?:bring|brought|get|got|take|took|turn|dial|knock|drop|crank|push|pull)\w*\s+(?:the\s+|its\s+|your\s+)?"
     r"(?:speed|pace|velocity|tempo)\s+(?:back\s+)?(?:down|up)\b",
     re.I,
 )
 """Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease
-up", "bring the speed down", "dial the pace back up"; "pick up the pace" is a word before a speed,
-which ``said_directions`` already leaves out)."""
+up", "speed the whole run up", "slow the final approach down", "bring the speed down", "dial the pace
+back up"; "pick up the pace" is a word before a speed, which ``said_directions`` already leaves out)."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""

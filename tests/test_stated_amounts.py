@@ -96,3 +96,16 @@ def test_a_number_the_words_give_to_another_direction_is_not_this_steps(words, s
 )
 def test_a_number_the_words_may_give_to_this_step_stays(words, step):
     assert use_stated_amounts(CODE.format(step=step), [words])[0].splitlines()[1] == step
+
+
+@pytest.mark.parametrize(
+    ("words", "amounts"),
+    [
+        ("sink the last point by 8 cm", {"down": 0.08}),
+        ("nudge it 15 millimetres to the right", {"right": 0.015}),
+        ("finish 2 metres further forward", {"front": 2.0}),
+        ("go 0.4m to the left, at 0.2 m/s", {"left": 0.4}),  # a speed is no length
+    ],
+)
+def test_a_length_in_a_metric_unit_is_read_in_metres(words: str, amounts: dict[str, float]) -> None:
+    assert direction_amounts(words) == pytest.approx(amounts)

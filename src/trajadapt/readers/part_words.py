@@ -11,6 +11,7 @@ import ast
 import re
 from dataclasses import dataclass
 
+from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import (
     GOAL,
@@ -113,6 +114,7 @@ def _moved_part(pattern: re.Pattern[str], clause: str) -> bool:
 
 
 def _clause_amount(clause: str) -> float | str | None:
+    clause = in_metres(clause)
     number = AMOUNT_NUMBER.search(clause)
     directed = directed_numbers(clause)
     if number:

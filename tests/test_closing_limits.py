@@ -111,3 +111,15 @@ def test_the_closing_run_is_read_in_order_with_lists_of_objects():
         ("stay_below", 1.5, ()),
         ("avoid", 0.25, ("person", "box")),
     ]
+
+
+def test_a_limit_that_keeps_the_ends_is_held_between_them():
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = stay_above(t, 0.2, keep_ends=True)")
+    path = dipping_path()
+    path[[0, -1], 2] = 0.0  # the path starts and ends on the floor
+    ran = run(code, path)
+    held, note = hold_closing_limits(code, ran, SCENE)
+    (_, limit) = closing_limits(code, SCENE)
+    assert limit.keep_ends and limit.holds(held) and note is not None
+    assert clearance(held, "person") >= 0.6 - 1e-6
+    np.testing.assert_allclose(held[[0, -1], 2], 0.0, atol=1e-9)  # its ends stay on the floor

@@ -144,3 +144,24 @@ def test_a_limit_no_step_keeps_is_added_beside_a_clearance() -> None:
     code, notes = relate_heights(CODE.format(step=step), [words])
     assert code.splitlines()[1:-1] == [step, "t = stay_below(t, 0.6)"]
     assert notes
+
+
+@pytest.mark.parametrize(
+    ("words", "added"),
+    [
+        ("mid-flight, hold it at least 0.5 off the floor", "t = stay_above(t, 0.5, keep_ends=True)"),
+        ("in the middle of the run keep at least 0.25 m up", "t = stay_above(t, 0.25, keep_ends=True)"),
+        ("let the middle section sag, at most z = 0.1 there", "t = stay_below(t, 0.1, keep_ends=True)"),
+        ("never dip under 0.2 at any point", "t = stay_above(t, 0.2)"),
+    ],
+)
+def test_a_limit_held_through_the_middle_keeps_the_ends(words: str, added: str) -> None:
+    code, _ = relate_heights(CODE.format(step="t = scale_speed(t, 1.4)"), [words])
+    assert code.splitlines()[1:-1] == ["t = scale_speed(t, 1.4)", added]
+
+
+def test_the_models_limit_held_through_the_middle_gets_the_ends_kept() -> None:
+    code, notes = relate_heights(
+        CODE.format(step="t = stay_above(t, 0.3)"), ["through the midway stretch stay above 0.3"]
+    )
+    assert code.splitlines()[1] == "t = stay_above(t, 0.3, keep_ends=True)" and notes

@@ -110,3 +110,16 @@ def test_a_going_on_towards_the_kept_goal_goes_on_nowhere_past_it(words: str) ->
 )
 def test_a_going_on_past_the_kept_goal_stays(words: str) -> None:
     assert "t = extend(t)" in steps_after(words, "t = extend(t)")
+
+
+def test_an_end_is_put_back_before_a_closing_limit_that_keeps_the_ends() -> None:
+    steps = steps_after(
+        "keep the middle low, below 0, then on to the usual end point",
+        "t = shift(t, 'down')",
+        "t = stay_below(t, 0, keep_ends=True)",
+    )
+    assert steps == [
+        "t = shift(t, 'down')",
+        "t = reach(t, detect_objects('goal'))",
+        "t = stay_below(t, 0, keep_ends=True)",
+    ]

@@ -6,12 +6,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from trajadapt.model.case import load_case
-from trajadapt.model.geometry import Axes
+from trajadapt.model.geometry import Axes, progress
 from trajadapt.skills import SKILLS, bind_skills, describe_skills, events, objects, shape, speed
 from trajadapt.skills.core import AMOUNT_WORDS, as_point, resolve_amount
 from trajadapt.skills.objects import CLOSER_FRACTIONS
+from trajadapt.skills.shape import stay_above, stay_below
 
 N = 100
 
@@ -359,3 +362,15 @@ def test_a_bend_near_the_goal_passes_through_without_blowing_up(ovita_dir: Path)
     assert np.linalg.norm(out[:, :3] - target, axis=1).min() < 1e-9  # through it exactly
     assert np.allclose(out[[0, -1], :3], t[[0, -1], :3])  # the ends stay
     assert after <= 3 * before  # no gap (the old end correction made it 3.6x)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.floats(-1.0, 1.0), min_size=8, max_size=40), st.floats(-0.5, 0.5))
+def test_a_height_limit_that_keeps_the_ends_holds_between_them(heights: list[float], limit: float) -> None:
+    n = len(heights)
+    path = np.column_stack([np.linspace(0, 2, n), np.zeros(n), heights, np.ones(n)])
+    above = stay_above(path, limit, keep_ends=True)
+    below = stay_below(path, limit, keep_ends=True)
+    inner = (progress(path) >= 0.1) & (progress(path) <= 0.9)  # the skill weighs the path it is given
+    assert (above[inner, 2] >= limit - 1e-9).all() and (below[inner, 2] <= limit + 1e-9).all()
+    assert np.allclose(above[[0, -1]], path[[0, -1]]) and np.allclose(below[[0, -1]], path[[0, -1]])

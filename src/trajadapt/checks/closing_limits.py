@@ -23,9 +23,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from trajadapt.code_parse import detected_name, parse_code
-from trajadapt.model.geometry import Array
+from trajadapt.model.geometry import Array, progress
 from trajadapt.model.scene import Scene
 from trajadapt.skills import bind_skills
+from trajadapt.skills.shape import LIMIT_FADE
 
 ROUNDS = 10
 """How often the closing limits are applied in turn at most (two rounds sufficed where measured)."""
@@ -41,6 +42,7 @@ class Limit:
     value: float
     points: tuple[tuple[float, float, float], ...] = ()
     names: tuple[str, ...] = ()
+    keep_ends: bool = False  # a height limit that holds away from the start and the goal
 
     def holds(self, trajectory: Array) -> bool:
         """Whether every waypoint keeps this limit."""
@@ -48,10 +50,14 @@ class Limit:
 
     def worst(self, trajectory: Array) -> float:
         """By how much the worst waypoint keeps the limit (negative: broken by that much)."""
+        z = trajectory[:, 2]
+        if self.keep_ends:
+            s = progress(trajectory)
+            z = z[(s >= LIMIT_FADE) & (s <= 1.0 - LIMIT_FADE)]
         if self.skill == "stay_above":
-            return float(trajectory[:, 2].min() - self.value)
+            return float(z.min() - self.value)
         if self.skill == "stay_below":
-            return float(self.value - trajectory[:, 2].max())
+            return float(self.value - z.max())
         nearest = min(float(np.linalg.norm(trajectory[:, :3] - p, axis=1).min()) for p in self.points)
         return nearest - self.value
 
@@ -65,7 +71,7 @@ class Limit:
         """The trajectory after this limit's skill."""
         if self.skill == "avoid":
             return skills["avoid"](trajectory, [list(p) for p in self.points], self.value)
-        return skills[self.skill](trajectory, self.value)
+        return skills[self.skill](trajectory, self.value, keep_ends=self.keep_ends)
 
 
 def closing_limits(code: str, scene: Scene) -> list[Limit]:
@@ -124,10 +130,9 @@ def _passes_on(statement: ast.stmt) -> bool:
 
 def _limit(name: str, call: ast.Call, scene: Scene) -> Limit | None:
     """The limit a step sets, when its numbers are literal and its points scene objects."""
-    arguments = list(call.args[1:]) + [k.value for k in call.keywords]
     if name != "avoid":
-        value = _number(arguments[0]) if len(arguments) == 1 else None
-        return None if value is None else Limit(name, value)
+        return _height_limit(name, call)
+    arguments = list(call.args[1:]) + [k.value for k in call.keywords]
     if len(arguments) != 2:
         return None
     names = _object_names(arguments[0])
@@ -137,6 +142,16 @@ def _limit(name: str, call: ast.Call, scene: Scene) -> Limit | None:
         return None
     points = tuple(obj.position for obj in found if obj is not None)
     return Limit(name, value, points, tuple(names))
+
+
+def _height_limit(name: str, call: ast.Call) -> Limit | None:
+    """The height limit of ``stay_above(t, 0.3)`` or ``stay_below(t, 0.3, keep_ends=True)``, if literal."""
+    options = {k.arg: k.value for k in call.keywords}
+    keep = options.pop("keep_ends", ast.Constant(False))
+    value = _number(call.args[1]) if len(call.args) == 2 and not options else None
+    if value is None or not isinstance(keep, ast.Constant) or not isinstance(keep.value, bool):
+        return None
+    return Limit(name, value, keep_ends=keep.value)
 
 
 def _number(node: ast.expr) -> float | None:

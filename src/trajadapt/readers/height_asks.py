@@ -16,7 +16,8 @@ A number the words give as a change is no height at all: "descend by 0.1", "the 
 0.2", "climb 0.3" move the path by that much (``clause_amounts.direction_amounts``), where the
 model wrote ``set_height(t, 0.1)`` or ``stay_below(t, 0.1)``. When the words give no height, no
 ground or floor, and one amount up or down, the one height step with that number becomes
-``shift`` by it.
+``shift`` by it. A limit the clause holds through the middle of the path ("through the middle of the
+flight stay at least 0.3 off the ground") keeps the start and the goal (``keep_ends=True``).
 """
 
 from __future__ import annotations
@@ -52,10 +53,15 @@ RELATIONS = (
 )
 HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
 VERTICAL = re.compile(
-    r"\b(?:above|below|under(?:neath)?|higher\s+than|lower\s+than|altitude|height|elevation|z\s*=|a\s+z\s+of)",
+    r"\b(?:above|below|under(?:neath)?|higher\s+than|lower\s+than|altitude|height|elevation|z\s*=|a\s+z\s+of"
+    rf"|off\s+the\s+(?:ground|floor))|(?<![\w.]){NUMBER_TEXT}\s*(?:m|cm)?\s+up\b",
     re.I,
 )
-"""Words that speak of height itself, so that a height they give may be added as a step."""
+"""Words that speak of height itself ("above", "altitude", "off the ground", "at least 0.4 m up"), so
+that a height they give may be added as a step."""
+MIDDLE = re.compile(r"\b(?:middle|mid-?(?:flight|way|route|path|air)|midway|halfway)\b", re.I)
+"""Words that hold a limit through the middle of the path: there it keeps the start and the goal."""
+OWN_LIMITS = ("stay_below", "stay_above")
 SIDEWAYS = re.compile(r"\b(?:away|from|clearance|distance|apart)\b", re.I)
 """Words of a distance from something: a number after "more than" there is no height."""
 GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
@@ -104,22 +110,25 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     if len(heights) != 1:
         return code, []
     skill, height, clause = heights[0]
+    held = _with_the_clause_before(words, clause)
     lines = code.splitlines()
     step = _one_height_step(lines, height, options=False)
     if step is None and not any(_height_step(x, options=True) for x in lines):
         step = _clearance_from_a_made_up_point(lines, height)
         if step is None:
-            return _added_height(lines, skill, height, clause)
-    if step is None or step[1] == skill:
+            return _added_height(lines, skill, height, clause, _ends_kept(skill, held))
+    if step is None or (step[1] == skill and not _through_the_middle(skill, held)):
         return code, []
-    line, changed = lines[step[0]], f"t = {skill}(t, {height:g})"
+    line, changed = lines[step[0]], f"t = {skill}(t, {height:g}{_ends_kept(skill, held)})"
     lines[step[0]] = in_place_of(line, changed)
     return "\n".join(lines), [
         f"`{line.strip()}` -> `{changed}`: the instruction asks for {_relation(skill)} {height:g}"
     ]
 
 
-def _added_height(lines: list[str], skill: str, height: float, words: str) -> tuple[str, list[str]]:
+def _added_height(
+    lines: list[str], skill: str, height: float, words: str, option: str = ""
+) -> tuple[str, list[str]]:
     """The height the words ask as the last step, when no step keeps any height ("fly no higher than 1.6").
 
     Only for words that speak of height itself ("above", "below", "higher than", "altitude", "z"): "more
@@ -128,7 +137,7 @@ def _added_height(lines: list[str], skill: str, height: float, words: str) -> tu
     program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None or not VERTICAL.search(words) or SIDEWAYS.search(words):
         return "\n".join(lines), []
-    step = f"{program[1]} = {skill}({program[1]}, {height:g})"
+    step = f"{program[1]} = {skill}({program[1]}, {height:g}{option})"
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     return "\n".join(lines), [
         f"added `{step}`: the instruction asks for {_relation(skill)} {height:g} and no step keeps it"
@@ -168,6 +177,23 @@ def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:
     lines[step[0]] = in_place_of(line, changed)
     note = f"`{line.strip()}` -> `{changed}`: the instruction moves the path {direction} by {amount:g}"
     return "\n".join(lines), [note]
+
+
+def _with_the_clause_before(words: str, clause: str) -> str:
+    """The clause and the one before it ("keep the middle part low, at or below z = 0")."""
+    clauses = split_clauses(words)
+    index = clauses.index(clause) if clause in clauses else 0
+    return " ".join(clauses[max(index - 1, 0) : index + 1])
+
+
+def _through_the_middle(skill: str, clause: str) -> bool:
+    """Whether the clause holds a height limit through the middle of the path only."""
+    return skill in OWN_LIMITS and MIDDLE.search(clause) is not None
+
+
+def _ends_kept(skill: str, clause: str) -> str:
+    """The limit step's option that keeps the start and the goal, where the clause holds it in the middle."""
+    return ", keep_ends=True" if _through_the_middle(skill, clause) else ""
 
 
 def _relation(skill: str) -> str:

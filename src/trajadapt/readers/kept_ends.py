@@ -65,6 +65,26 @@ LEAVES = {
 """The parts of ``shift_part`` that leave each end where it is."""
 
 
+def _before_the_closing_limits(lines: list[str], index: int) -> int:
+    """Where an end is put back: before the program's closing height limits that keep the ends.
+
+    "Keep the middle low, at or below z = 0, then on to the usual end point": the goal put back after
+    ``stay_below(t, 0, keep_ends=True)`` would bend the middle up again.
+    """
+    while index > 0 and _keeps_ends_in_its_limit(lines[index - 1]):
+        index -= 1
+    return index
+
+
+def _keeps_ends_in_its_limit(line: str) -> bool:
+    found = assigned_call(line)
+    return (
+        found is not None
+        and found[2] in ("stay_above", "stay_below")
+        and any(k.arg == "keep_ends" for k in found[1].keywords)
+    )
+
+
 def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with the ends the words keep left where they are (see the module), and notes."""
     asked = list(asked)
@@ -86,7 +106,7 @@ def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     for end in sorted(moving):
         step = PUT_BACK[end].format(t=variable)
         if step not in (x.strip() for x in lines):
-            index = after_last_step(lines, SKILL_NAMES)
+            index = _before_the_closing_limits(lines, after_last_step(lines, SKILL_NAMES))
             lines.insert(index, step)
             notes.append(f"added `{step}`: the words keep the {end} where it is, and a step may move it")
     return ("\n".join(lines), notes) if notes else (code, [])

@@ -146,14 +146,23 @@ def set_height(
 ) -> Array:
     """Fly the path at a constant height z, blending from/to the start and goal if they are kept."""
     t = as_trajectory(trajectory)
+    t[:, 2] += _away_from_the_ends(t, keep_start, keep_goal) * (float(height) - t[:, 2])
+    return t
+
+
+def _away_from_the_ends(t: Array, keep_start: bool, keep_goal: bool, over: float = 0.15) -> Array:
+    """A weight 0 at each kept end that rises smoothly to 1 over the share ``over`` of the path."""
     s = progress(t)
     weight = np.ones(len(t))
     if keep_start:
-        weight *= smoothstep(s / 0.15)
+        weight *= smoothstep(s / over)
     if keep_goal:
-        weight *= smoothstep((1.0 - s) / 0.15)
-    t[:, 2] += weight * (float(height) - t[:, 2])
-    return t
+        weight *= smoothstep((1.0 - s) / over)
+    return weight
+
+
+LIMIT_FADE = 0.1
+"""The share of the path at each end over which a height limit that keeps the ends fades in."""
 
 
 def keep_side(
@@ -176,17 +185,27 @@ def keep_side(
     return t
 
 
-def stay_above(trajectory: TrajectoryArg, height: HeightArg) -> Array:
-    """Raise any waypoint below height z up to it."""
+def stay_above(trajectory: TrajectoryArg, height: HeightArg, *, keep_ends: bool = False) -> Array:
+    """Raise any waypoint below height z up to it.
+
+    With ``keep_ends`` (set by a reader where the words hold the limit through the middle of the path:
+    "stay at least 0.3 off the ground through the middle of the flight") the start and the goal stay
+    and the limit fades in over the first and last 10% of the path (``LIMIT_FADE``).
+    """
     t = as_trajectory(trajectory)
-    t[:, 2] = np.maximum(t[:, 2], float(height))
+    weight = _away_from_the_ends(t, keep_ends, keep_ends, LIMIT_FADE)
+    t[:, 2] += weight * (np.maximum(t[:, 2], float(height)) - t[:, 2])
     return t
 
 
-def stay_below(trajectory: TrajectoryArg, height: HeightArg) -> Array:
-    """Lower any waypoint above height z down to it."""
+def stay_below(trajectory: TrajectoryArg, height: HeightArg, *, keep_ends: bool = False) -> Array:
+    """Lower any waypoint above height z down to it.
+
+    With ``keep_ends``, as ``stay_above``'s: the limit holds away from the start and the goal.
+    """
     t = as_trajectory(trajectory)
-    t[:, 2] = np.minimum(t[:, 2], float(height))
+    weight = _away_from_the_ends(t, keep_ends, keep_ends, LIMIT_FADE)
+    t[:, 2] += weight * (np.minimum(t[:, 2], float(height)) - t[:, 2])
     return t
 
 

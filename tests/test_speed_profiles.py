@@ -80,3 +80,12 @@ def test_a_profile_the_other_way_from_the_asked_pace_is_turned(step: str, words:
 )
 def test_profiles_the_words_allow_stay(step: str, words: str) -> None:
     assert profile_paces(program(step), [words], NAMES) == (program(step), [])
+
+
+def test_a_slowing_to_rest_stays_beside_words_that_ask_only_faster() -> None:
+    code, notes = profile_paces(
+        program("t = scale_speed(t, 1.4, part='start')", "t = speed_profile(t, 'decelerate', start=0.6)"),
+        ["hurry through the first part, then be at rest when it reaches the goal"],
+        [],
+    )
+    assert "'decelerate'" in code and not notes

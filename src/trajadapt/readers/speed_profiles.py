@@ -23,7 +23,7 @@ from collections.abc import Iterable
 from trajadapt.code_parse import call_of, in_place_of
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START
-from trajadapt.readers.stop_words import COMING_TO_REST
+from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
 from trajadapt.readers.words import FASTER, SLOWER, names_in
 
 TO_A_STOP = re.compile(
@@ -87,7 +87,8 @@ def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
     "As you come to the goal, reduce the speed evenly" came back as ``speed_profile(t, 'constant',
     start=0.7)``, which speeds the end up to the path's top speed. Words that ask only slower make a
     profile 'decelerate', only faster 'accelerate'; words of an even speed ("constant", "steady",
-    "uniform speed") keep 'constant'.
+    "uniform speed") keep 'constant', and words of a stop keep 'decelerate' (a slowing to rest at the
+    end is no pace of the path: "speed up the opening part and end fully stopped at the crib").
     """
     slower, faster = bool(SLOWER.search(words)), bool(FASTER.search(words))
     if slower == faster:
@@ -101,6 +102,8 @@ def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
             continue
         if kind.value == "constant" and EVEN_PACE.search(words):
             continue
+        if kind.value == "decelerate" and AT_REST.search(words):
+            continue  # "speed up the opening part ... end right at the crib, fully stopped there"
         kind.value = wanted
         step = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"  # type: ignore[arg-type]
         notes.append(f"`{line.strip()}` -> `{step}`: the words ask a {'slower' if slower else 'faster'} pace")

@@ -13,8 +13,9 @@ import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.height_asks import asked_heights
+from trajadapt.readers.height_asks import asked_heights, relate_heights
 from trajadapt.readers.object_words import ends_at_the_place
+from trajadapt.readers.paces import stated_factor
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import said_directions
 
@@ -289,3 +290,46 @@ def test_a_pace_verb_around_its_object_asks_no_direction(words):
 )
 def test_a_direction_beside_a_pace_verb_stays(words, direction):
     assert said_directions(words) == {direction}
+
+
+@pytest.mark.parametrize(
+    ("words", "limits"),
+    [
+        (
+            "hold the altitude between 0.4 and 0.9 m throughout",
+            ["t = stay_above(t, 0.4)", "t = stay_below(t, 0.9)"],
+        ),
+        (
+            "make sure z stays between z = -0.1 and z = 0.3",
+            ["t = stay_above(t, -0.1)", "t = stay_below(t, 0.3)"],
+        ),
+    ],
+)
+def test_a_band_of_heights_is_both_limits(words, limits):
+    code, _ = relate_heights(program("t = scale_speed(t, 0.65)"), [words])
+    assert code.splitlines()[2:-1] == limits
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "cut the pace by at least 40 percent",
+        "drop the speed below 50% near the end",
+        "go 3 times above the speed",
+    ],
+)
+def test_a_share_or_a_factor_is_no_height(words):
+    assert asked_heights(words) == []
+
+
+@pytest.mark.parametrize(
+    ("words", "faster", "factor"),
+    [
+        ("cut the speed by at least 40%", False, 0.52),
+        ("it should be 10 percent quicker or more", True, 1.12),
+        ("no less than twice as fast", True, 2.2),
+        ("exactly 40% slower", False, 0.6),  # a plain stated factor stays as said
+    ],
+)
+def test_a_least_change_of_pace_is_met_beyond_it(words, faster, factor):
+    assert stated_factor(words, faster) == pytest.approx(factor)

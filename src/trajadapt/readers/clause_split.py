@@ -30,6 +30,7 @@ import re
 from collections.abc import Sequence
 
 from trajadapt.readers.words import (
+    NUMBER_TEXT,
     PLACE_WORDS,
     TO_AND_FRO,
     asked_kinds,
@@ -168,6 +169,8 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return True  # a sentence mark, "then"
     if joiner.strip() == "and" and _second_of_a_pair(previous, piece, names):
         return False  # "the midpoint between the heron *and the spaniel* ..."
+    if joiner.strip() == "and" and RANGE_OPENED.search(previous) and RANGE_CLOSED.match(piece):
+        return False  # "keep the height between z = -0.2 *and z = 0.2*"
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
         return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
@@ -191,6 +194,10 @@ def _only_a_heading(piece: str, names: Sequence[str]) -> bool:
     return len(said_directions(piece)) == 1 and all(w in HEADING_WORDS or w in DIRECTION_WORDS for w in words)
 
 
+_VALUE = rf"(?:(?:z|x|y|height|speed)\s*=\s*|(?:a\s+)?(?:height|speed|altitude)\s+of\s+)?-?(?:{NUMBER_TEXT})"
+RANGE_OPENED = re.compile(rf"\bbetween\s+{_VALUE}(?:\s*(?:m|cm|mm|m/s))?$", re.I)
+RANGE_CLOSED = re.compile(rf"{_VALUE}\b", re.I)
+"""A range of numbers: "between z = -0.2 *and* z = 0.2", "between 0.5 *and* 1.2 m" (one clause)."""
 PAIRING = re.compile(r"\b(?:between|of)\s+(?:the\s+)?[\w\s-]+$", re.I)
 """A piece that ends with the first of a pair of objects: "between the heron", "the midpoint of X"."""
 

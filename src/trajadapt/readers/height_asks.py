@@ -32,7 +32,8 @@ from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 from trajadapt.skills import SKILL_NAMES
 
-NUMBER = rf"({NUMBER_TEXT})"
+NUMBER = rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|per\s*cent|percent|times\b|x\b))"
+"""A height's number: not a share or a factor ("slow down by at least 30 percent" gives no height)."""
 LEVEL = r"(?:height|altitude|elevation)"
 BELOW = (
     rf"below|under(?:neath)?|lower than|at most|cap\w*(?:\s+(?:the\s+|its\s+|your\s+)?{LEVEL})?\s+at"
@@ -51,6 +52,11 @@ RELATIONS = (
     ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+{NAMED}{NUMBER}", re.I)),
     ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
 )
+BAND = re.compile(
+    rf"\b(?:between|from)\s+{NAMED}(-?(?:{NUMBER_TEXT}))\s+(?:and|to)\s+{NAMED}(-?(?:{NUMBER_TEXT}))(?![\d.])",
+    re.I,
+)
+"""A band of heights: "keep the height between z = -0.2 and z = 0.2" is above the one, below the other."""
 HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
 VERTICAL = re.compile(
     r"\b(?:above|below|under(?:neath)?|higher\s+than|lower\s+than|altitude|height|elevation|z\s*=|a\s+z\s+of"
@@ -98,7 +104,34 @@ def _clause_heights(words: str) -> list[tuple[str, float, str]]:
                 negated = NEGATION.search(clause[: match.start()]) is not None
                 at.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
         found += [(skill, height, clause) for _, skill, height in sorted(at)]
+        if VERTICAL.search(clause):
+            found += [(skill, height, clause) for skill, height in _band(clause)]
     return found
+
+
+def _added_band(code: str, heights: list[tuple[str, float, str]]) -> tuple[str, list[str]]:
+    """``code`` with both limits of the band the words give added last, and a note each."""
+    notes: list[str] = []
+    for skill, height, clause in heights:
+        code, added = _added_height(code.splitlines(), skill, height, clause)
+        notes += added
+    return code, notes
+
+
+def _is_one_band(heights: list[tuple[str, float, str]]) -> bool:
+    """Whether the heights the words give are the two limits of one band."""
+    return [skill for skill, _, _ in heights] == ["stay_above", "stay_below"] and len(
+        {c for *_, c in heights}
+    ) == 1
+
+
+def _band(clause: str) -> list[tuple[str, float]]:
+    """The two limits of a band of heights the clause gives (``BAND``), lower first."""
+    found = BAND.search(clause)
+    if found is None:
+        return []
+    low, high = sorted((float(found.group(1)), float(found.group(2))))
+    return [("stay_above", low), ("stay_below", high)] if low < high else []
 
 
 def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
@@ -107,6 +140,8 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     heights = _clause_heights(words)
     if not heights:
         return _height_as_change(code, words)
+    if _is_one_band(heights) and not any(_height_step(x, options=True) for x in code.splitlines()):
+        return _added_band(code, heights)
     if len(heights) != 1:
         return code, []
     skill, height, clause = heights[0]

@@ -31,7 +31,8 @@ def stated_factor(words: str, faster: bool) -> float | None:
     """The one factor the speed clause of ``words`` states in the asked direction, or None.
 
     "slower by half" states 0.5, "twice as fast" 2, "20% slower" 0.8 (a percentage only with its
-    sign); a clause with no such number, or with two, states none.
+    sign), "at least 25% slower" 0.7 (``LEAST_MARGIN``); a clause with no such number, or with two,
+    states none.
 
     >>> stated_factor("walk away from the lamp and go slower by half", faster=False)
     0.5
@@ -43,7 +44,17 @@ def stated_factor(words: str, faster: bool) -> float | None:
         percent = [float(n) for n in PERCENT.findall(clause)]
         candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}
     asked = {round(c, 6) for c in candidates if (c > 1 if faster else 0 < c < 1)}
-    return asked.pop() if len(asked) == 1 else None
+    if len(asked) != 1:
+        return None
+    factor = asked.pop()
+    return round(1 + (factor - 1) * LEAST_MARGIN, 6) if AT_LEAST.search(clause) else factor
+
+
+AT_LEAST = re.compile(r"\b(?:at\s+least|no\s+less\s+than|a\s+minimum\s+of|or\s+more)\b", re.I)
+"""Words that state the least change of a pace: "at least 25% slower", "20% faster or more"."""
+LEAST_MARGIN = 1.2
+"""A least change of pace is met with a fifth more ("at least 25% slower" is 30% slower), so that the
+change is more than the least, not on it."""
 
 
 def _factor_numbers(clause: str) -> list[float]:

@@ -29,7 +29,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of
 from trajadapt.llm.answer_grammar import skill_parameters
-from trajadapt.readers.paces import STOP_RAMP_START, speed_factor, stated_factor
+from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
 from trajadapt.skills import SKILLS
 
@@ -140,11 +140,13 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
         value = argument.value
         if not isinstance(value, int | float) or isinstance(value, bool) or value <= 0 or value == 1:
             continue
-        if is_stated_factor(float(value), numbers):
-            continue
         faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
         asked = faster if faster != slower else value > 1
         stated = stated_factor(words, asked)
+        if is_stated_factor(float(value), numbers) and (stated is None or AT_LEAST.search(words) is None):
+            continue
+        if stated is not None and abs(stated - value) <= 1e-6:
+            continue
         argument.value = stated or speed_factor(words, asked)
         return ast.unparse(tree), stated is not None
     return None

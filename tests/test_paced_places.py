@@ -77,3 +77,15 @@ def test_in_the_stage_the_note_names_the_reader() -> None:
     )
     assert "pass_through" not in code and "scale_speed(t, 1.4, near=detect_objects('red mug'))" in code
     assert [n.reader for n in notes] == ["paced-places"]
+
+
+def test_the_midpoint_of_an_object_and_itself_is_that_object() -> None:
+    code, notes = leave_out_moves_of_paced_places(
+        program(
+            "t = pass_through(t, midpoint(detect_objects('kettle'), detect_objects('kettle')))",
+            "t = scale_speed(t, 0.65, near=detect_objects('kettle'))",
+        ),
+        ["take it gently around the kettle"],
+        NAMES,
+    )
+    assert code == program("t = scale_speed(t, 0.65, near=detect_objects('kettle'))") and notes

@@ -83,7 +83,14 @@ def direction_argument(call: ast.Call | None) -> str | None:
 
 
 def detected_name(node: ast.expr) -> str | None:
-    """The name in ``detect_objects('<name>')``, or None for any other expression."""
+    """The name in ``detect_objects('<name>')``, or None for any other expression.
+
+    The midpoint of an object and itself (``midpoint(detect_objects('loaf'), detect_objects('loaf'))``,
+    written for "slow down around the loaf") is that object.
+    """
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "midpoint":
+        pair = {detected_name(arg) for arg in node.args} if len(node.args) == 2 else {None}
+        return pair.pop() if len(pair) == 1 else None
     if (
         isinstance(node, ast.Call)
         and isinstance(node.func, ast.Name)

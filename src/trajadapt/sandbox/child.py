@@ -43,7 +43,12 @@ from trajadapt.sandbox.protocol import (
     worker_answer_json,
 )
 from trajadapt.sandbox.restricted import BoundedOutput, make_builtins, preload_modules
-from trajadapt.sandbox.rewrite import assign_discarded_results, measure_from_original, passes_last
+from trajadapt.sandbox.rewrite import (
+    assign_discarded_results,
+    limits_last,
+    measure_from_original,
+    passes_last,
+)
 from trajadapt.sandbox.template import Template, TemplateGone, ended, send_job
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
 
@@ -189,6 +194,7 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
         notes += assign_discarded_results(tree, SKILL_NAMES)
         notes += measure_from_original(tree)
         notes += passes_last(tree)
+        notes += limits_last(tree)
     namespace = _namespace(api, modules, output) if python_layers else _unrestricted_namespace(api, output)
     try:
         exec(compile(tree, GENERATED_FILENAME, "exec"), namespace)  # noqa: S102

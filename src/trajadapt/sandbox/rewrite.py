@@ -25,7 +25,7 @@ A limit (a clearance, a height bound) keeps its promise only when no move runs a
 from __future__ import annotations
 
 import ast
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 
 from trajadapt.code_parse import SPEED_STEPS, detected_names
 
@@ -127,22 +127,7 @@ def passes_last(tree: ast.Module) -> list[str]:
     Returns:
         One note per step moved.
     """
-    notes: list[str] = []
-    for start, end in _step_runs(tree.body, PASSES | MOVES | SPEEDS):
-        run = tree.body[start:end]
-        names = [_skill(statement) for statement in run]
-        first_pass = next((i for i, name in enumerate(names) if name in PASSES), None)
-        if first_pass is None or not any(name in MOVES for name in names[first_pass:]):
-            continue
-        passes = [s for s, name in zip(run, names, strict=True) if name in PASSES]
-        notes += [
-            f"line {statement.lineno}: {_skill(statement)}() runs after the moves written after it, so that "
-            "the path still passes the point"
-            for statement in passes
-        ]
-        tree.body[start:end] = [s for s in run if s not in passes] + passes
-    ast.fix_missing_locations(tree)
-    return notes
+    return _last_in_their_runs(tree, PASSES, MOVES, "the path still passes the point")
 
 
 LIMITS = frozenset({"avoid", "stay_above", "stay_below"})
@@ -165,23 +150,39 @@ def limits_last(tree: ast.Module) -> list[str]:
     Returns:
         One note per step moved.
     """
+    return _last_in_their_runs(tree, LIMITS, FREE_MOVES, "its limit still holds", _names_a_kept_clear_object)
+
+
+def _names_a_kept_clear_object(run: list[ast.stmt], limits: list[ast.stmt]) -> bool:
+    """Whether a step of the run other than the limits names an object a limit keeps clear of."""
+    kept_clear = {name for statement in limits for name in detected_names(statement)}
+    return any(kept_clear & set(detected_names(s)) for s in run if s not in limits)
+
+
+def _last_in_their_runs(
+    tree: ast.Module,
+    last: frozenset[str],
+    moves: frozenset[str],
+    so_that: str,
+    left_as_written: Callable[[list[ast.stmt], list[ast.stmt]], bool] = lambda run, steps: False,
+) -> list[str]:
+    """Move the ``last`` steps of each run (with ``moves`` and speed steps) after a move that follows them."""
     notes: list[str] = []
-    for start, end in _step_runs(tree.body, LIMITS | FREE_MOVES | SPEEDS):
+    for start, end in _step_runs(tree.body, last | moves | SPEEDS):
         run = tree.body[start:end]
         names = [_skill(statement) for statement in run]
-        first = next((i for i, name in enumerate(names) if name in LIMITS), None)
-        if first is None or not any(name in FREE_MOVES for name in names[first:]):
+        first = next((i for i, name in enumerate(names) if name in last), None)
+        if first is None or not any(name in moves for name in names[first:]):
             continue
-        limits = [s for s, name in zip(run, names, strict=True) if name in LIMITS]
-        kept_clear = {n for s in limits for n in detected_names(s)}
-        if any(kept_clear & set(detected_names(s)) for s in run if s not in limits):
+        moved = [s for s, name in zip(run, names, strict=True) if name in last]
+        if left_as_written(run, moved):
             continue
         notes += [
-            f"line {statement.lineno}: {_skill(statement)}() runs after the moves written after it, so that "
-            "its limit still holds"
-            for statement in limits
+            f"line {statement.lineno}: {_skill(statement)}() runs after the moves written after it, "
+            f"so that {so_that}"
+            for statement in moved
         ]
-        tree.body[start:end] = [s for s in run if s not in limits] + limits
+        tree.body[start:end] = [s for s in run if s not in moved] + moved
     ast.fix_missing_locations(tree)
     return notes
 

@@ -165,3 +165,17 @@ def test_the_models_limit_held_through_the_middle_gets_the_ends_kept() -> None:
         CODE.format(step="t = stay_above(t, 0.3)"), ["through the midway stretch stay above 0.3"]
     )
     assert code.splitlines()[1] == "t = stay_above(t, 0.3, keep_ends=True)" and notes
+
+
+@pytest.mark.parametrize(
+    ("words", "heights"),
+    [
+        ("never let the gripper sink under 85 cm", [("stay_above", 0.85)]),
+        ("keep it below 1200 mm the whole time", [("stay_below", 1.2)]),
+        ("fly at a height of 2 m", [("set_height", 2.0)]),
+    ],
+)
+def test_a_height_in_a_metric_unit_is_read_in_metres(words: str, heights: list[tuple[str, float]]) -> None:
+    found = asked_heights(words)
+    assert [skill for skill, _ in found] == [skill for skill, _ in heights]
+    assert [height for _, height in found] == pytest.approx([height for _, height in heights])

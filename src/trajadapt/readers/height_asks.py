@@ -17,7 +17,8 @@ A number the words give as a change is no height at all: "descend by 0.1", "the 
 model wrote ``set_height(t, 0.1)`` or ``stay_below(t, 0.1)``. When the words give no height, no
 ground or floor, and one amount up or down, the one height step with that number becomes
 ``shift`` by it. A limit the clause holds through the middle of the path ("through the middle of the
-flight stay at least 0.3 off the ground") keeps the start and the goal (``keep_ends=True``).
+flight stay at least 0.3 off the ground") keeps the start and the goal (``keep_ends=True``). A height
+with a metric unit is read in metres ("at least 20 cm up" is 0.2).
 """
 
 from __future__ import annotations
@@ -27,7 +28,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import DISTANCE_STEPS, after_last_step, assigned_call, in_place_of, skill_program
-from trajadapt.readers.clause_amounts import direction_amounts
+from trajadapt.readers.clause_amounts import direction_amounts, in_metres
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 from trajadapt.skills import SKILL_NAMES
@@ -93,7 +94,7 @@ def asked_heights(words: str) -> list[tuple[str, float]]:
 def _clause_heights(words: str) -> list[tuple[str, float, str]]:
     """(skill, height, clause) for each height the words give, in their order."""
     found: list[tuple[str, float, str]] = []
-    for clause in split_clauses(words):
+    for clause in split_clauses(in_metres(words)):
         if SIDEWAYS.search(clause) and not (VERTICAL.search(clause) or GROUND.search(clause)):
             continue
         at: list[tuple[int, str, float]] = []
@@ -216,7 +217,7 @@ def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:
 
 def _with_the_clause_before(words: str, clause: str) -> str:
     """The clause and the one before it ("keep the middle part low, at or below z = 0")."""
-    clauses = split_clauses(words)
+    clauses = split_clauses(in_metres(words))
     index = clauses.index(clause) if clause in clauses else 0
     return " ".join(clauses[max(index - 1, 0) : index + 1])
 

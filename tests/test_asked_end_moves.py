@@ -13,7 +13,7 @@ import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.asked_directions import asked_end_move
-from trajadapt.readers.words import said_directions
+from trajadapt.readers.direction_words import said_directions
 
 NAMES = ["vest", "lamp"]
 

@@ -10,7 +10,7 @@ import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.asked_shapes import add_asked_shapes, asked_shape
-from trajadapt.readers.words import said_directions
+from trajadapt.readers.direction_words import said_directions
 
 NAMES = ["lamp", "king snake", "crate"]
 

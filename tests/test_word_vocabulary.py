@@ -8,8 +8,9 @@ import pytest
 from trajadapt.checks import contradictions as effect_flags
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.model.geometry import PAPER_AXES
+from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import object_asks
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, said_directions, stated_numbers
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, stated_numbers
 
 
 @pytest.mark.parametrize(

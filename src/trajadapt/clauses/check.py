@@ -18,7 +18,8 @@ import numpy as np
 from trajadapt.checks.contradictions import contradictions
 from trajadapt.checks.effect import NOTICEABLE, Effect
 from trajadapt.model.geometry import Axes
-from trajadapt.readers.words import asked_kinds, asks_distance, names_in, said_directions
+from trajadapt.readers.direction_words import asked_kinds, said_directions
+from trajadapt.readers.words import asks_distance, names_in
 
 
 def clause_findings(clause: str, effect: Effect, axes: Axes) -> list[str]:

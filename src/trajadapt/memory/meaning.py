@@ -16,7 +16,8 @@ from __future__ import annotations
 
 from trajadapt.clauses.grammar import said_places
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace, said_directions
+from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, asks_pace
 
 MARK = "@"
 """What starts a meaning token (no word stem does)."""

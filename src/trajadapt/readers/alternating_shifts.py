@@ -24,7 +24,8 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import call_of, direction_argument, in_place_of, skill_program
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
-from trajadapt.readers.words import DIRECTION_WORDS, whole_count
+from trajadapt.readers.direction_words import DIRECTION_WORDS
+from trajadapt.readers.words import whole_count
 from trajadapt.skills import SKILL_NAMES
 
 ALTERNATION = re.compile(

@@ -2,7 +2,7 @@
 
 A small model drops a clause of a compound instruction: "go to the front decelerating to 0 speed"
 came back as a deceleration alone, "raise the path slightly" beside a moved start as the start's
-move alone. A clause that names exactly one direction (``words.said_directions``: "front", "raise",
+move alone. A clause that names exactly one direction (``direction_words.said_directions``: "front", "raise",
 "descend", ...), no part or end of the path, no negation, and uses the direction word as a move
 rather than a place ("above the lamp", "left of the box", "up to the lamp" are places) asks the path
 to move that way, whatever else it asks ("go slightly upwards keeping a smaller distance from the
@@ -31,7 +31,8 @@ from collections.abc import Iterable
 from trajadapt.code_parse import assigned_call, called_name, in_place_of, skill_program
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, part_named, said_directions
+from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, part_named
 from trajadapt.skills import SKILL_NAMES
 
 PLACE_OF = re.compile(

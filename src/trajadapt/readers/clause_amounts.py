@@ -11,7 +11,8 @@ from __future__ import annotations
 import re
 
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import NUMBER_TEXT, directed_numbers, said_directions
+from trajadapt.readers.direction_words import directed_numbers, said_directions
+from trajadapt.readers.words import NUMBER_TEXT
 
 METRIC = re.compile(
     rf"(?<![\w.])({NUMBER_TEXT})\s*(cm|centimet(?:er|re)s?|mm|millimet(?:er|re)s?|m|met(?:er|re)s?)\b(?!\s*/)",

@@ -29,14 +29,12 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from trajadapt.readers.direction_words import TO_AND_FRO, asked_kinds, said_directions
 from trajadapt.readers.words import (
     NUMBER_TEXT,
     PLACE_WORDS,
-    TO_AND_FRO,
-    asked_kinds,
     asks_distance,
     names_in,
-    said_directions,
     whole_words,
 )
 

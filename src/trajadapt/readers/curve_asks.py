@@ -30,7 +30,7 @@ from trajadapt.code_parse import (
     number_arguments,
     skill_program,
 )
-from trajadapt.readers.words import said_directions
+from trajadapt.readers.direction_words import said_directions
 from trajadapt.skills import SKILL_NAMES
 
 _BENDING = r"(?:curv\w*|bend\w*|arc\w*)"

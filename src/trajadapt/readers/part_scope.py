@@ -46,8 +46,9 @@ from trajadapt.code_parse import (
 )
 from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.part_words import PartMove, first_count, part_moves
-from trajadapt.readers.words import AWAY, CLOSER, PART_OR_END, names_in, said_directions
+from trajadapt.readers.words import AWAY, CLOSER, PART_OR_END, names_in
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.skills import SKILL_NAMES
 

@@ -13,15 +13,14 @@ from dataclasses import dataclass
 
 from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.direction_words import directed_numbers, said_directions
 from trajadapt.readers.words import (
     GOAL,
     NUMBER_TEXT,
     PAST_THE_GOAL,
     SPEED_WORDS,
     START,
-    directed_numbers,
     intensity_word,
-    said_directions,
     whole_count,
 )
 

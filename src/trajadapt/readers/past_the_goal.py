@@ -47,7 +47,8 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import PAST_THE_GOAL, SENTENCE_END, longest_names, names_in, said_directions
+from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.words import PAST_THE_GOAL, SENTENCE_END, longest_names, names_in
 from trajadapt.sandbox.api import GOAL_NAMES
 from trajadapt.skills import SKILL_NAMES
 

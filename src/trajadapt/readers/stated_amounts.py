@@ -23,7 +23,8 @@ from collections.abc import Iterable
 from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
 from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import intensity_word, said_directions, stated_numbers
+from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.words import intensity_word, stated_numbers
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
 

@@ -42,16 +42,10 @@ from trajadapt.code_parse import (
     parse_code,
     step_on_object,
 )
+from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import asked_words, object_asks
 from trajadapt.readers.paces import speed_factor
-from trajadapt.readers.words import (
-    FASTER,
-    PART_OR_END,
-    SLOWER,
-    intensity_word,
-    part_named,
-    said_directions,
-)
+from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, intensity_word, part_named
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
 MOVING = re.compile(

@@ -1,0 +1,106 @@
+"""The directions the user's words ask the path to move in, and the numbers they give a direction.
+
+A direction word is no direction where it belongs to another phrase: a pace ("slow down", "speed
+up"), a finishing verb ("end up"), a swing both ways ("left and right"), "right" that stresses a place
+("right at the vest"); more or less of a height is up or down, "back up" and "reverse by 3" are back.
+Split from ``readers.words`` (the general vocabulary), which these phrases build on.
+"""
+
+from __future__ import annotations
+
+import re
+
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS
+from trajadapt.readers.stop_words import DOWN_TO_REST
+from trajadapt.readers.words import NUMBER_TEXT, OF_DISTANCE, OF_SPEED, PACE_PHRASES, PATH_WORDS, asks_pace
+
+_HEIGHT_NOUN = r"(?:\w+\s+){0,3}?(?:altitude|height|elevation)\b"
+MORE_HEIGHT = re.compile(
+    rf"\b(?:gain\w*|greater|more|increas\w*|add\w*|extra|bigger|larger)\s+{_HEIGHT_NOUN}", re.I
+)
+LESS_HEIGHT = re.compile(
+    rf"\b(?:los(?:e|es|ing)|lost|less|reduc\w*|decreas\w*|shed\w*|smaller)\s+{_HEIGHT_NOUN}", re.I
+)
+"""More or less of a height: a direction said with a noun ("gain a bit of altitude", "less height")."""
+BACK_UP = re.compile(
+    r"\bback(?:s|ed|ing)?\s+(?:(?:it|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|arm))\s+)?up\b", re.I
+)
+"""The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
+RIGHT_AS_STRESS = re.compile(
+    r"\b(?<!turn )(?<!turns )(?<!turning )(?<!turned )(?<!veer )(?<!bear )(?<!steer )(?<!swerve )(?<!go )"
+    r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"
+    r"right\s+(?=(?:at|by(?!\s+(?:\d|\.\d|zero|one|two|three|four|five|six|seven|eight|nine|ten|a|an|some"
+    r"|half|about|around|roughly|approximately)\b)|past|next|beside|alongside|through|over|above|below|under|underneath|behind|before"
+    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to)\b)",
+    re.I,
+)
+""""Right" that stresses a place or a time, not the side: "finish right at the vest", "cruise right past
+the lamp" ("turn right at the lamp", "move right past it", "to the right of" stay the side)."""
+ENDING_UP = re.compile(r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?)\s+up\b", re.I)
+"""Phrasal verbs of finishing: "end up 0.8 further front", "wrap up with a slower finish" ask no up."""
+TO_AND_FRO = re.compile(
+    r"\b(?:back\s+and\s+forth|forth\s+and\s+back|to\s+and\s+fro|side\s+to\s+side|left\s+and\s+right"
+    r"|right\s+and\s+left|up\s+and\s+down|down\s+and\s+up)\b",
+    re.I,
+)
+"""A swing both ways ("weave back and forth", "left and right", "up and down"): no one direction."""
+REVERSING = re.compile(
+    r"\b(?:revers(?:e|es|ed|ing)|retreat(?:s|ed|ing)?)\b"
+    r"(?!\s+(?:the|its|this|that|it|them|order|direction|course|sequence|waypoints?|points?)\b)",
+    re.I,
+)
+"""Reversing or retreating as a move ("reverse by 3", "retreat a little"): backwards. Reversing the
+path, its order or its direction is no move that way."""
+
+DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
+"""Every word that names a direction, to its canonical direction."""
+
+
+_DIRECTION_ALTERNATIVES = "|".join(sorted(DIRECTION_WORDS, key=len, reverse=True))
+_WHAT_MOVES = r"it|everything|(?:the\s+)?(?:whole\s+|entire\s+)?(?:path|route|trajectory)"
+DIRECTED_NUMBER = re.compile(
+    rf"\bby\s+({NUMBER_TEXT})(?![\w.])"
+    rf"|(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
+    rf"(?:{_DIRECTION_ALTERNATIVES})\b"
+    rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+(?:(?:{_WHAT_MOVES})\s+)?({NUMBER_TEXT})(?![\w.])"
+    r"(?!\s*(?:(?:way)?points?|steps?|times?|turns?))",
+    re.I,
+)
+"""A number given to a direction: "by 0.2", "0.2 to the left", "0.2 further left", "0.2 over to the
+left", "rise 0.2", "raise the path 0.2" (not "up 3 times" or "left 10 points", which count)."""
+
+
+def directed_numbers(clause: str) -> list[float]:
+    """The numbers ``clause`` gives a direction (``DIRECTED_NUMBER``), in order.
+
+    >>> directed_numbers("continue moving 0.2 to the left")
+    [0.2]
+    """
+    return [float(next(group for group in found if group)) for found in DIRECTED_NUMBER.findall(clause)]
+
+
+def said_directions(words: str) -> set[str]:
+    """The directions the words ask the path to move in, canonical ('upwards' -> 'up', 'climb' -> 'up').
+
+    A pace is no direction: "slow down", "speed up" (``PACE_PHRASES``), "coast down to a stop"
+    (``DOWN_TO_REST``) and "raise the pace"
+    (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
+    ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
+    height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up", "reverse by 3" and
+    "retreat a little" are back (``BACK_UP``, ``REVERSING``).
+    """
+    text = PACE_PHRASES.sub(" slow ", DOWN_TO_REST.sub(" ", words.lower()))
+    text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", text))
+    text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
+    text = RIGHT_AS_STRESS.sub(
+        " ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", TO_AND_FRO.sub(" ", text)))
+    )
+    return {DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", text) if word in DIRECTION_WORDS}
+
+
+def asked_kinds(words: str) -> frozenset[str]:
+    """What the words ask about: 'pace' (how fast), 'place' (where the path goes), both or neither."""
+    kinds = {"pace"} if asks_pace(words) else set()
+    if PATH_WORDS.search(words) or said_directions(words):
+        kinds.add("place")
+    return frozenset(kinds)

@@ -105,6 +105,9 @@ def test_a_number_the_words_may_give_to_this_step_stays(words, step):
         ("nudge it 15 millimetres to the right", {"right": 0.015}),
         ("finish 2 metres further forward", {"front": 2.0}),
         ("go 0.4m to the left, at 0.2 m/s", {"left": 0.4}),  # a speed is no length
+        ("drift half a metre to the left", {"left": 0.5}),  # a number said in words (session 31)
+        ("climb a meter", {"up": 1.0}),
+        ("ease one centimetre back", {"back": 0.01}),
     ],
 )
 def test_a_length_in_a_metric_unit_is_read_in_metres(words: str, amounts: dict[str, float]) -> None:

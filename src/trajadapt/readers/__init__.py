@@ -23,6 +23,7 @@ from trajadapt.readers.asked_paces import add_asked_paces
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.asked_shapes import add_asked_shapes
+from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.end_places import end_at_asked_places
 from trajadapt.readers.height_asks import relate_heights
@@ -118,7 +119,9 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     ``asked`` holds the user's words (the instruction, then each feedback); ``names`` the scene's
     object names. A sentence that only says how the path is now ("it's too slow near the lamp")
     is no request, and the readers do not read it (``request_words``); an object called by a name
-    no scene object has is read as the one the answer chose (``chosen_referents``).
+    no scene object has is read as the one the answer chose (``chosen_referents``). Every reader reads
+    a length said with a metric unit in metres, as the scene's numbers are ("at least 20 cm" is 0.2,
+    "a metre away" is 1: ``clause_amounts.in_metres``).
     """
     requests = [request_words(words, names) for words in asked]
     notes = [
@@ -133,7 +136,7 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     for index, request in enumerate(requests):
         requests[index], found = chosen_referents(request, code, names)
         notes += [ReaderNote("object-mentions", message) for message in found]
-    asked = requests
+    asked = [in_metres(request) for request in requests]
     for reader in READERS:
         code, found = reader.read(code, asked, names)
         notes += [ReaderNote(reader.name, message) for message in found]

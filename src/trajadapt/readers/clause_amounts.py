@@ -19,7 +19,14 @@ METRIC = re.compile(
     re.I,
 )
 """A length with its metric unit: "5 cm", "20mm", "1 m", "1.5 metres" (not a speed: "0.3 m/s")."""
+SPELLED_METRIC = re.compile(
+    r"\b(half\s+an?|an?|one)\s+((?:centi|milli)?met(?:er|re))\b(?!\s*(?:/|per\b|an?\s+second\b))",
+    re.I,
+)
+"""A length said with a word for its number: "a metre", "one meter", "half a metre", "a centimetre"
+(not a speed: "a metre per second")."""
 SCALE = {"c": 0.01, "m": 0.001}
+SPELLED = {"a": 1.0, "an": 1.0, "one": 1.0, "half": 0.5}
 
 
 def in_metres(text: str) -> str:
@@ -27,14 +34,23 @@ def in_metres(text: str) -> str:
 
     >>> in_metres("drop the end 5 cm lower and go 1 m further back at 0.3 m/s")
     'drop the end 0.05 lower and go 1 further back at 0.3 m/s'
+    >>> in_metres("stay at least a metre away, then half a metre up")
+    'stay at least 1 away, then 0.5 up'
     """
 
     def metres(found: re.Match[str]) -> str:
-        unit = found.group(2).lower()
-        factor = 1.0 if unit == "m" or unit.startswith("met") else SCALE[unit[0]]
-        return f"{float(found.group(1)) * factor:g}"
+        return f"{float(found.group(1)) * _unit_factor(found.group(2)):g}"
 
-    return METRIC.sub(metres, text)
+    def spelled(found: re.Match[str]) -> str:
+        return f"{SPELLED[found.group(1).split()[0].lower()] * _unit_factor(found.group(2)):g}"
+
+    return METRIC.sub(metres, SPELLED_METRIC.sub(spelled, text))
+
+
+def _unit_factor(unit: str) -> float:
+    """Metres in one ``unit`` ("cm": 0.01, "metre": 1)."""
+    unit = unit.lower()
+    return 1.0 if unit == "m" or unit.startswith("met") else SCALE[unit[0]]
 
 
 def direction_amounts(words: str) -> dict[str, float]:

@@ -31,6 +31,9 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("have it end up a bit more to the right", ("shift_goal", "right")),
         ("the final position should sit higher", ("shift_goal", "up")),
         ("start 0.1 further to the left", ("shift_start", "left")),
+        # the goal named with a word between (session 31; fresh-j's "the final hover point")
+        ("lower the final resting position a bit", ("shift_goal", "down")),
+        ("put the final parking point 0.2 further left", ("shift_goal", "left")),
     ],
 )
 def test_an_end_move_is_read(clause: str, asked: tuple[str, str]) -> None:
@@ -47,6 +50,7 @@ def test_an_end_move_is_read(clause: str, asked: tuple[str, str]) -> None:
         "don't finish lower",  # a negation
         "shift the end of the path left",  # the end part, not the goal
         "finish at the vest",  # no direction
+        "shift the final few points left",  # the end part, not the goal
     ],
 )
 def test_no_end_move_is_read(clause: str) -> None:
@@ -57,6 +61,14 @@ def test_a_dropped_end_move_is_added_with_its_number() -> None:
     assert steps_after("slow down, and finish 0.15 further back", "t = scale_speed(t, 0.65)") == [
         "t = shift_goal(t, 'back', 0.15)",
         "t = scale_speed(t, 0.65)",
+    ]
+
+
+def test_a_dropped_end_move_in_a_metric_unit_is_added_in_metres() -> None:
+    words = "keep at least half a metre from the lamp and lift the final landing point by 20 cm"
+    assert steps_after(words, "t = move_away(t, detect_objects('lamp'))") == [
+        "t = shift_goal(t, 'up', 0.2)",
+        "t = avoid(t, detect_objects('lamp'), 0.5)",
     ]
 
 

@@ -80,6 +80,10 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("handle the last bit gently", False),
         ("zoom through the middle", True),
         ("rush the first half", True),
+        # up to two words before the speed (session 31; fresh-j's "cut the overall speed")
+        ("reduce the arm's travel speed", False),
+        ("drop the cruising pace a little", False),
+        ("boost its top speed near the crate", True),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:
@@ -139,3 +143,9 @@ def test_the_effect_flags_use_the_same_words() -> None:
 def test_a_skill_still_takes_only_direction_words() -> None:
     with pytest.raises(ValueError, match="direction"):
         PAPER_AXES.vector("climb")
+
+
+@pytest.mark.parametrize("words", ["lower the path at constant speed", "raise it up and keep the speed"])
+def test_a_direction_beside_a_speed_is_no_change_of_speed(words: str) -> None:
+    assert not FASTER.search(words) and not SLOWER.search(words)
+    assert said_directions(words) == {"down" if words.startswith("lower") else "up"}

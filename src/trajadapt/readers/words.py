@@ -48,10 +48,12 @@ START = re.compile(
 """Words that name the path's start ("the start", "the initial position")."""
 GOAL = re.compile(
     r"\b(?:the\s+goal\b|goal\s+(?:position|point|pose|location)|end(?:ing)?\s+(?:position|point|pose|location)"
-    r"|final\s+(?:position|point|waypoint|pose|location)|destination)",
+    r"|final\s+(?:(?!few|couple|several|last|two|three|four|five|\d)[a-z-]+\s+)?(?:position|point|waypoint|pose|location)"
+    r"|destination)",
     re.I,
 )
-"""Words that name the path's goal ("the goal", "the end point", "the destination")."""
+"""Words that name the path's goal ("the goal", "the end point", "the destination", "the final hover
+point"; "the final few points" are the end of the path)."""
 
 PART_OR_END = re.compile(
     r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
@@ -89,19 +91,26 @@ back up"; "pick up the pace" is a word before a speed, which ``said_directions``
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""
+_NOT_A_MODIFIER = r"(?:and|or|but|then|so|at|in|on|by|to|of|for|from|with|while|as|near|around|up|down)"
+CHANGED_SPEED = (
+    rf"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:(?!{_NOT_A_MODIFIER}\b)[a-z']+\s+){{0,2}}"
+    r"(?:speed|pace|velocity)\b"
+)
+"""A speed as the object of a verb of more or less, with up to two words before it ("cut the overall
+speed", "lower the robot's travel speed"; not "lower the path at constant speed")."""
 
 
 FASTER = re.compile(
     r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
     r"|sprint\w*|rush\w*|hustl\w*"
-    rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{SPEED_NOUN}"
+    rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{CHANGED_SPEED}"
     rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN})",
     re.I,
 )
 SLOWER = re.compile(
     r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*|creep\w*|crept|tiptoe\w*|dawdl\w*|gentl\w*"
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
-    rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{SPEED_NOUN})",
+    rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED})",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",

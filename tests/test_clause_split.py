@@ -42,6 +42,10 @@ def test_each_request_is_a_clause(words, clauses):
         "arc over the middle, bulging upwards",
         "move 0.5 to the left and 0.3 up",
         "make the point between the chair and the table your new end",  # a pair, then its request
+        # both ends named together (session 31)
+        "keep the start and goal where they are",
+        "the first and last waypoints must not move",
+        "pin the beginning and final positions",
     ],
 )
 def test_what_only_names_or_qualifies_stays_in_its_clause(words):
@@ -219,4 +223,16 @@ def test_a_topic_said_first_goes_with_the_request_after_its_colon(words):
     ],
 )
 def test_a_colon_after_a_request_or_anything_else_still_breaks(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        ("go to the end and start slowing down", ("go to the end", "start slowing down")),
+        ("pass the chair and finish 0.2 higher", ("pass the chair", "finish 0.2 higher")),
+        ("reach the goal and end there", ("reach the goal", "end there")),
+    ],
+)
+def test_an_end_word_used_as_a_verb_after_an_end_still_breaks(words, clauses):
     assert split_clauses(words, NAMES) == clauses

@@ -29,6 +29,9 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("don't touch the start or the goal", {"start", "goal"}),
         ("keep both the beginning and the destination fixed", {"start", "goal"}),
         ("leave the start where it was", {"start"}),
+        # a word of degree before the state (session 31; fresh-j's "exactly where they are")
+        ("keep the goal precisely where it is", {"goal"}),
+        ("hold the start and end points just as they were", {"start", "goal"}),
         ("keep the goal speed the same", set()),  # a pace of an end, not its place
         ("keep the start fixed. now move the start left", set()),  # taken back by a later request
     ],

@@ -169,6 +169,8 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return False  # "the midpoint between the heron *and the spaniel* ..."
     if joiner.strip() == "and" and RANGE_OPENED.search(previous) and RANGE_CLOSED.match(piece):
         return False  # "keep the height between z = -0.2 *and z = 0.2*"
+    if joiner.strip() == "and" and FIRST_END.search(previous) and SECOND_END.match(piece):
+        return False  # "leave the start *and end points* where they are"
     participle = _is_participle(piece.split()[0])
     if participle and joiner == PARTICIPLE:
         return bool(_content_words(piece, names)[1:]) or bool(said_directions(piece))
@@ -196,6 +198,18 @@ _VALUE = rf"(?:(?:z|x|y|height|speed)\s*=\s*|(?:a\s+)?(?:height|speed|altitude)\
 RANGE_OPENED = re.compile(rf"\bbetween\s+{_VALUE}(?:\s*(?:m|cm|mm|m/s))?$", re.I)
 RANGE_CLOSED = re.compile(rf"{_VALUE}\b", re.I)
 """A range of numbers: "between z = -0.2 *and* z = 0.2", "between 0.5 *and* 1.2 m" (one clause)."""
+_END_NOUN = r"(?:start|starting|beginning|initial|first|origin|end|ending|goal|final|last|finish|destination)"
+FIRST_END = re.compile(
+    rf"\b(?:the|its|both)\s+{_END_NOUN}(?:\s+(?:point|position|pose|location|waypoint))?$", re.I
+)
+SECOND_END = re.compile(
+    rf"^(?:the\s+)?{_END_NOUN}\b(?!\s+(?:at|near|by|up|with|on|in|beside|next|there|here|right|over|again"
+    r"|to|further|farther|higher|lower|more|less|a|an|\d|\.\d|[a-z]+ing\b))",
+    re.I,
+)
+"""Both ends of the path named together: "the start *and* end points", "the start *and* the goal" (one
+clause); not where the second word is a verb ("go to the end and start slowing", "and end at the lamp",
+"and finish 0.2 higher")."""
 PAIRING = re.compile(r"\b(?:between|of)\s+(?:the\s+)?[\w\s-]+$", re.I)
 """A piece that ends with the first of a pair of objects: "between the heron", "the midpoint of X"."""
 

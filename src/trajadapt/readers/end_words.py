@@ -17,7 +17,7 @@ _ENDS = (
     r"(?:\s+(?:positions?|points?|poses?|waypoints?|spots?|places?|locations?))?"
 )
 _STATE = (
-    r"(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
+    r"(?:(?:exactly|just|precisely|right|firmly|completely|totally|entirely)\s+)?(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
     r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:it|they)\s+(?:is|are|was|were))"
 )
 KEPT_ENDS = (
@@ -47,7 +47,7 @@ KEPT_ENDS = (
 """Words that keep an end of the path where it is: "keeping the start and end positions the same",
 "don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
 "head to the same endpoint", "on to the usual end spot", "keeping the same start", "then finish
-exactly as before"."""
+exactly as before", "leave the start and end points exactly where they are"."""
 
 
 def kept_ends(requests: Sequence[str]) -> set[str]:

@@ -8,6 +8,7 @@ import pytest
 from trajadapt.checks import contradictions as effect_flags
 from trajadapt.memory.meaning import asked_meanings
 from trajadapt.model.geometry import PAPER_AXES
+from trajadapt.readers import read_against_words
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import object_asks
 from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, stated_numbers
@@ -149,3 +150,31 @@ def test_a_skill_still_takes_only_direction_words() -> None:
 def test_a_direction_beside_a_speed_is_no_change_of_speed(words: str) -> None:
     assert not FASTER.search(words) and not SLOWER.search(words)
     assert said_directions(words) == {"down" if words.startswith("lower") else "up"}
+
+
+@pytest.mark.parametrize(
+    ("words", "relation"),
+    [
+        # coming within a distance is a pass close by (session 31; fresh-j's "passes within 0.3 m of")
+        ("pass within 0.3 of the vase", "by"),
+        ("bring the arm within 20 cm of the vase on the way", "by"),
+        ("fly within half a metre of the vase", "by"),
+        ("keep within 0.5 of the vase", None),  # a place kept, not a pass
+        ("slow down within 0.3 of the vase", "slower"),  # a pace's reach
+    ],
+)
+def test_coming_within_a_distance_passes_close_by(words: str, relation: str | None) -> None:
+    ask = object_asks(words, ["vase"]).get("vase")
+    assert (ask.relation if ask else None) == relation
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "continue 0.2 to the left past where the path currently ends",
+        "keep going 0.2 left beyond where it stops",
+    ],
+)
+def test_past_where_the_path_ends_is_past_the_goal(words: str) -> None:
+    code = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
+    assert read_against_words(code, [words], ["vase"])[0].splitlines()[1] == "t = extend(t, 0.2, 'left')"

@@ -66,6 +66,7 @@ first half"), so it does not ask the whole path to move."""
 
 PAST_THE_GOAL = re.compile(
     r"\b(?:(?:after|past|beyond|once|upon)\b(?:\s+[\w']+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)"
+    r"|(?:past|beyond)\s+where\s+(?:[\w']+\s+){0,3}?(?:ends|ended|stops|stopped|finishes|finished)"
     r"|(?:when\w*|as soon as|on|first)\s+(?:[\w']+\s+){0,2}?"
     r"(?:reach\w*|arriv\w*(?:\s+at)?|get\w*\s+to|got\s+to|hit\w*|at)\s+(?:the\s+)?(?:goal|end|destination|final)"
     r"|(?:goal|destination)(?:\s+\w+){0,2}?\s+(?:is|has been|was|gets)\s+reached)\b",
@@ -73,7 +74,7 @@ PAST_THE_GOAL = re.compile(
 )
 """Words that place a request after the path's goal: "after reaching the goal", "past the end", "once
 at the destination", "upon arrival at the goal", "when you get to the goal", "once the goal is
-reached"."""
+reached", "past where the path currently ends"."""
 
 
 PACE_PHRASES = re.compile(
@@ -147,12 +148,14 @@ VISIT = re.compile(
     r"|(?:pass|go|goes|going|went|fly|flies|flying|flew|drive\w*|drove|walk\w*|rout\w*|run\w*|ran"
     r"|head\w*|travel\w*|mov\w*|come|comes|coming|came|get|gets|getting|got|sweep\w*|skim\w*|cruis\w*"
     r"|detour\w*|divert\w*|veer\w*|swerv\w*|swing\w*|swung|dip\w*|cut\w*|wander\w*)"
-    r"\s+(?:\w+\s+)?(?:by|past|next\s+to|beside|alongside|near(?:by)?|through))\b",
+    r"\s+(?:\w+\s+)?(?:by|past|next\s+to|beside|alongside|near(?:by)?|through)"
+    r"|(?:pass\w*|go|goes|going|went|fly|flies|flying|flew|drive\w*|drove|rout\w*|come|comes|coming|came|get"
+    r"|gets|getting|got|swing\w*|swung|dip\w*|bring\w*|brought)\s+(?:\w+\s+){0,2}?within)\b",
     re.I,
 )
 """What asks the path to pass close by an object (not closer than it is: close to it): "pass close to",
 "swing by", "fly close past", "route past", "take a detour past", "veer by", "come close to", "go
-through", "via", "visit"."""
+through", "via", "visit", "pass within 0.3 of", "bring it within 0.2 of" (not "keep within": a place kept)."""
 KEEPING = re.compile(r"\b(?:stay\w*|keep\w*|kept|remain\w*|hold\w*|stick\w*)\b", re.I)
 """Verbs of keeping: "stay close to X", "keep close to X" ask the path to keep near it, not to visit it."""
 REFUSED = re.compile(r"\b(?:not|never|no|avoid\w*|without|instead\s+of|too)\b|n't\b", re.I)

@@ -115,6 +115,19 @@ def number_arguments(call: ast.Call | None) -> list[float]:
     ]
 
 
+def profile_kind(call: ast.Call | None) -> ast.Constant | None:
+    """The kind of a ``speed_profile`` call ('decelerate', 'accelerate', ...) as its constant node.
+
+    None where the call writes no constant kind. The node itself, so that a reader may turn the kind
+    ("constant" where the words ask slower); read positionally or as ``kind=``.
+    """
+    if call is None:
+        return None
+    keyword = next((k.value for k in call.keywords if k.arg == "kind"), None)
+    kind = keyword if keyword is not None else (call.args[1] if len(call.args) > 1 else None)
+    return kind if isinstance(kind, ast.Constant) and isinstance(kind.value, str) else None
+
+
 def detected_names(node: ast.AST) -> list[str]:
     """The names passed to ``detect_objects`` anywhere in ``node`` (a call, a statement, a program)."""
     return [

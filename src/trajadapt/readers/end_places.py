@@ -44,6 +44,7 @@ from trajadapt.code_parse import (
     detected_names,
     in_place_of,
     objects_of,
+    profile_kind,
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
@@ -189,9 +190,8 @@ def _rests_there(end: AskedEnd, clauses: list[str], names: list[str]) -> bool:
 def _ends_at_rest(lines: list[str]) -> bool:
     """Whether a step leaves the robot at rest at the end: a ``stop_at`` or a slowing to 0."""
     for line in lines:
-        call = call_of(line, ("stop_at", "speed_profile"))
-        kind = call.args[1] if call is not None and len(call.args) > 1 else None
-        if called_name(line) == "stop_at" or (isinstance(kind, ast.Constant) and kind.value == "decelerate"):
+        kind = profile_kind(call_of(line, ("speed_profile",)))
+        if called_name(line) == "stop_at" or (kind is not None and kind.value == "decelerate"):
             return True
     return False
 

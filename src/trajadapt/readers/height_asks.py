@@ -26,6 +26,7 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Iterable
+from typing import NamedTuple
 
 from trajadapt.code_parse import DISTANCE_STEPS, after_last_step, assigned_call, in_place_of, skill_program
 from trajadapt.readers.clause_amounts import direction_amounts, in_metres
@@ -88,13 +89,24 @@ def asked_heights(words: str) -> list[tuple[str, float]]:
     it drop below 0.5" -> above 0.5). A clause of a distance from something ("at least 0.15 from the
     dog") gives no height unless it speaks of height itself.
     """
-    return [(skill, height) for skill, height, _ in _clause_heights(words)]
+    return [(asked.skill, asked.height) for asked in _clause_heights(words)]
 
 
-def _clause_heights(words: str) -> list[tuple[str, float, str]]:
-    """(skill, height, clause) for each height the words give, in their order."""
-    found: list[tuple[str, float, str]] = []
-    for clause in split_clauses(in_metres(words)):
+class AskedHeight(NamedTuple):
+    """A height the words give: its step, its number, its clause, and that clause with the one before."""
+
+    skill: str
+    height: float
+    clause: str
+    held: str  # "keep the middle part low, at or below z = 0": the clause before says where it holds
+
+
+def _clause_heights(words: str) -> list[AskedHeight]:
+    """Each height the words give, in their order."""
+    found: list[AskedHeight] = []
+    clauses = split_clauses(in_metres(words))
+    for index, clause in enumerate(clauses):
+        held = " ".join(clauses[max(index - 1, 0) : index + 1])
         if SIDEWAYS.search(clause) and not (VERTICAL.search(clause) or GROUND.search(clause)):
             continue
         at: list[tuple[int, str, float]] = []
@@ -104,26 +116,25 @@ def _clause_heights(words: str) -> list[tuple[str, float, str]]:
                     continue
                 negated = NEGATION.search(clause[: match.start()]) is not None
                 at.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
-        found += [(skill, height, clause) for _, skill, height in sorted(at)]
+        found += [AskedHeight(skill, height, clause, held) for _, skill, height in sorted(at)]
         if VERTICAL.search(clause):
-            found += [(skill, height, clause) for skill, height in _band(clause)]
+            found += [AskedHeight(skill, height, clause, held) for skill, height in _band(clause)]
     return found
 
 
-def _added_band(code: str, heights: list[tuple[str, float, str]]) -> tuple[str, list[str]]:
+def _added_band(code: str, heights: list[AskedHeight]) -> tuple[str, list[str]]:
     """``code`` with both limits of the band the words give added last, and a note each."""
     notes: list[str] = []
-    for skill, height, clause in heights:
-        code, added = _added_height(code.splitlines(), skill, height, clause)
+    for asked in heights:
+        code, added = _added_height(code.splitlines(), asked.skill, asked.height, asked.clause)
         notes += added
     return code, notes
 
 
-def _is_one_band(heights: list[tuple[str, float, str]]) -> bool:
+def _is_one_band(heights: list[AskedHeight]) -> bool:
     """Whether the heights the words give are the two limits of one band."""
-    return [skill for skill, _, _ in heights] == ["stay_above", "stay_below"] and len(
-        {c for *_, c in heights}
-    ) == 1
+    skills = [asked.skill for asked in heights]
+    return skills == ["stay_above", "stay_below"] and len({asked.clause for asked in heights}) == 1
 
 
 def _band(clause: str) -> list[tuple[str, float]]:
@@ -145,8 +156,7 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         return _added_band(code, heights)
     if len(heights) != 1:
         return code, []
-    skill, height, clause = heights[0]
-    held = _with_the_clause_before(words, clause)
+    skill, height, clause, held = heights[0]
     lines = code.splitlines()
     step = _one_height_step(lines, height, options=False)
     if step is None and not any(_height_step(x, options=True) for x in lines):
@@ -213,13 +223,6 @@ def _height_as_change(code: str, words: str) -> tuple[str, list[str]]:
     lines[step[0]] = in_place_of(line, changed)
     note = f"`{line.strip()}` -> `{changed}`: the instruction moves the path {direction} by {amount:g}"
     return "\n".join(lines), [note]
-
-
-def _with_the_clause_before(words: str, clause: str) -> str:
-    """The clause and the one before it ("keep the middle part low, at or below z = 0")."""
-    clauses = split_clauses(in_metres(words))
-    index = clauses.index(clause) if clause in clauses else 0
-    return " ".join(clauses[max(index - 1, 0) : index + 1])
 
 
 def _through_the_middle(skill: str, clause: str) -> bool:

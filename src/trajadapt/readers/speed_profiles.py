@@ -20,7 +20,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import call_of, in_place_of
+from trajadapt.code_parse import call_of, in_place_of, profile_kind
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
@@ -97,15 +97,15 @@ def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
     lines, notes = code.splitlines(), []
     for index, line in enumerate(lines):
         call = call_of(line, ("speed_profile",))
-        kind = call.args[1] if call is not None and len(call.args) > 1 else None
-        if not isinstance(kind, ast.Constant) or kind.value in (wanted, "trapezoidal"):
+        kind = profile_kind(call)
+        if call is None or kind is None or kind.value in (wanted, "trapezoidal"):
             continue
         if kind.value == "constant" and EVEN_PACE.search(words):
             continue
         if kind.value == "decelerate" and AT_REST.search(words):
             continue  # "speed up the opening part ... end right at the crib, fully stopped there"
         kind.value = wanted
-        step = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"  # type: ignore[arg-type]
+        step = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"
         notes.append(f"`{line.strip()}` -> `{step}`: the words ask a {'slower' if slower else 'faster'} pace")
         lines[index] = in_place_of(line, step)
     return "\n".join(lines), notes

@@ -27,7 +27,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.code_parse import assigned_call, in_place_of, profile_kind
 from trajadapt.llm.answer_grammar import skill_parameters
 from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
@@ -158,13 +158,11 @@ def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:
     if found is None or found[2] != "speed_profile" or SHARE_WORDS.search(words):
         return None
     tree, call, _ = found
-    kind = call.args[1] if len(call.args) > 1 else None
+    kind = profile_kind(call)
     start = next(
         (k.value for k in call.keywords if k.arg == "start"), call.args[3] if len(call.args) > 3 else None
     )
-    if not (
-        isinstance(kind, ast.Constant) and kind.value == "decelerate" and isinstance(start, ast.Constant)
-    ):
+    if kind is None or kind.value != "decelerate" or not isinstance(start, ast.Constant):
         return None
     value = start.value
     if not isinstance(value, int | float) or isinstance(value, bool) or value in (0, STOP_RAMP_START):

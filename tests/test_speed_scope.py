@@ -101,3 +101,55 @@ def test_an_end_given_in_order_and_the_part_of_the_pace_clause_only() -> None:
     step = "t = scale_speed(t, 1.4, detect_objects('goal'), 0.2)"
     code, _ = localize_speed(CODE.format(step=step), ["shift the middle left and go faster"], ["lamp"])
     assert code == CODE.format(step="t = scale_speed(t, 1.4)")  # "middle" belongs to the shift's clause
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        # a profile for a pace the words place at an object (session 31; fresh-i's "on the approach to")
+        (
+            "slow down as the robot approaches the person",
+            "t = scale_speed(t, 0.65, near=detect_objects('person'))",
+        ),
+        (
+            "go a lot slower in the vicinity of the box",
+            "t = scale_speed(t, 0.45, near=detect_objects('box'))",
+        ),
+        ("speed up when passing the person", "t = scale_speed(t, 1.4, near=detect_objects('person'))"),
+    ],
+)
+def test_a_profile_for_a_pace_placed_at_an_object_is_placed_there(words: str, step: str) -> None:
+    kind = "accelerate" if "up" in words else "decelerate"
+    code, notes = localize_speed(
+        CODE.format(step=f"t = speed_profile(t, {kind!r}, start=0.7)"), [words], NAMES
+    )
+    assert code.splitlines()[1] == step
+    assert "not towards the goal" in notes[0]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "slow down near the person and stop at the end",  # a stop: the profile makes it
+        "slow down near the person in the second half",  # a part of the path
+        "slow down towards the goal",  # no object
+    ],
+)
+def test_a_profile_for_an_end_a_part_or_no_object_stays(words: str) -> None:
+    code = CODE.format(step="t = speed_profile(t, 'decelerate', start=0.7)")
+    assert localize_speed(code, [words], NAMES)[0] == code
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        # a part the pace's words never name (session 31; fresh-f's "slow to roughly half speed")
+        "around the box, bring the speed down to about half; the goal stays where it is",
+        "keep at least 0.2 from the person, and near the box go at half speed",
+    ],
+)
+def test_a_number_of_the_speed_or_a_kept_end_names_no_part_for_the_pace(words: str) -> None:
+    code = CODE.format(step="t = scale_speed(t, 0.5, part='middle')")
+    assert localize_speed(code, [words], NAMES)[0].splitlines()[1] == (
+        "t = scale_speed(t, 0.5, near=detect_objects('box'))"
+    )

@@ -12,6 +12,12 @@ its own either: it gives way to the object. A speed step placed near an end of t
 never name (``near=detect_objects('goal')`` for "speed up in the middle of the trajectory": an
 example's place, not the user's) is placed where the words say: the part they name, else the whole
 path. A review note says so. Measured on stored answers in docs/benchmarks.md.
+
+A slowing or speeding profile (``speed_profile(t, 'decelerate')``) as the code's one speed step,
+where that clause places the pace at its object and the words name no part or end of the path and
+no stop ("slow down on the approach to the person", "ease off as you near the lamp"), changes the
+speed towards the goal, not near the object: it becomes ``scale_speed`` of the clause's calibrated
+factor placed there.
 """
 
 from __future__ import annotations
@@ -20,13 +26,26 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import PLACED_SPEED_STEPS, assigned_call, in_place_of, placed_near
+from trajadapt.code_parse import (
+    PLACED_SPEED_STEPS,
+    SPEED_STEPS,
+    assigned_call,
+    call_of,
+    called_name,
+    in_place_of,
+    placed_near,
+    profile_kind,
+)
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.end_words import kept_ends
 from trajadapt.readers.object_words import WITHIN
+from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
-    PART_OR_END,
+    FASTER,
     PLACE_WORDS,
+    SLOWER,
     SPEED_WORDS,
     asks_pace,
     longest_names,
@@ -109,9 +128,11 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
     if scoped is None:
         return code, []
     clause, target = scoped
-    parts_said = PART_OR_END.search(words) is not None
+    parts_said = _part_said_for_the_pace(clause, words, names)
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]
+    if not unplaced and not parts_said and not COMING_TO_REST.search(words):
+        return _profile_placed(lines, clause, target)
     if len(unplaced) != 1:
         return code, []
     index = unplaced[0]
@@ -124,6 +145,37 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
     before, after = lines[index].strip(), ast.unparse(tree)
     lines[index] = in_place_of(lines[index], after)
     note = f"`{before}` -> `{after}`: the instruction changes the speed near {target}, not everywhere"
+    return "\n".join(lines), [note]
+
+
+def _part_said_for_the_pace(clause: str, words: str, names: list[str]) -> bool:
+    """Whether the words name a part of the path the pace may be meant for.
+
+    The pace clause's own part ("slow down near the box in the second half"), or one a clause of no
+    object names ("towards the end, go faster near the person"); not a number said of the speed ("half
+    speed") nor an end another clause keeps ("the destination stays where it is").
+    """
+    others = [c for c in split_clauses(words, names) if c != clause and not names_in(c, names)]
+    return part_named(clause) is not None or any(part_named(c) and not kept_ends([c]) for c in others)
+
+
+def _profile_placed(lines: list[str], clause: str, target: str) -> tuple[str, list[str]]:
+    """``lines`` with their one speed step, a slowing or speeding profile, made a scale near ``target``."""
+    speed = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
+    slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
+    kind = profile_kind(call_of(lines[speed[0]], ("speed_profile",))) if len(speed) == 1 else None
+    if kind is None or kind.value not in ("decelerate", "accelerate") or slower == faster:
+        return "\n".join(lines), []
+    index, variable = speed[0], lines[speed[0]].split("=")[0].strip()
+    reach = WITHIN.search(clause)
+    radius = f", radius={float(reach.group(1)):g}" if reach is not None else ""
+    step = (
+        f"{variable} = scale_speed({variable}, {speed_factor(clause, faster):g}, "
+        f"near=detect_objects({target!r}){radius})"
+    )
+    before = lines[index].strip()
+    lines[index] = in_place_of(lines[index], step)
+    note = f"`{before}` -> `{step}`: the instruction changes the speed near {target}, not towards the goal"
     return "\n".join(lines), [note]
 
 

@@ -103,7 +103,7 @@ def latte_field(trajectory: Array, point: Array) -> Array:
     mean = np.zeros(len(distance))
     d, m = distance[inside], lower[inside]
     mean[inside] = ((high - m) - d * np.log(high / m)) / (high - low)
-    return mean
+    return np.clip(mean, 0.0, 1.0)  # rounding leaves -1e-16 at the reach's edge
 
 
 def scale_speed(

@@ -89,3 +89,33 @@ def test_a_slowing_to_rest_stays_beside_words_that_ask_only_faster() -> None:
         [],
     )
     assert "'decelerate'" in code and not notes
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "expected"),
+    [
+        # one pace for the whole path, answered with a profile (session 31; fresh-f's "30% slower overall")
+        ("drive the whole route about 25% slower", "t = speed_profile(t, 'decelerate', start=0.7)",
+         "t = scale_speed(t, 0.75)"),
+        ("shift the last point 0.2 left and speed up a lot", "t = speed_profile(t, 'accelerate')",
+         "t = scale_speed(t, 1.6)"),
+    ],
+)  # fmt: skip
+def test_a_profile_for_one_pace_of_the_whole_path_is_a_scale(words: str, step: str, expected: str) -> None:
+    assert expected in profile_paces(program(step), [words], NAMES)[0].splitlines()
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "slow down gradually",  # a pace that changes
+        "slow down towards the end",  # an end
+        "ease off in steps, one every 4 waypoints",
+        "go slower; you're in the middle",  # a part said in a clause of its own
+        "slow down near the lamp",  # an object
+        "slow down until it stops",  # a stop
+    ],
+)
+def test_a_profile_the_words_may_ask_stays(words: str) -> None:
+    code = program("t = speed_profile(t, 'decelerate', start=0.6)")
+    assert profile_paces(code, [words], NAMES)[0] == code

@@ -3,10 +3,22 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.end_words import kept_ends
 from trajadapt.readers.request_words import is_statement
-from trajadapt.readers.words import FASTER, NUMBER_TEXT, NUMBER_WORDS, SLOWER, SPEED_WORDS, amount_size
+from trajadapt.readers.words import (
+    FASTER,
+    NUMBER_TEXT,
+    NUMBER_WORDS,
+    SLOWER,
+    SPEED_WORDS,
+    amount_size,
+    names_in,
+    part_named,
+)
 from trajadapt.skills.speed import SPEED_FACTORS
 
 STOP_RAMP_START = 0.6
@@ -86,3 +98,19 @@ def _speed_clauses(words: str, faster: bool) -> list[str]:
     asked = FASTER if faster else SLOWER
     said = [c for c in split_clauses(words) if asked.search(c) and not is_statement(c)]
     return said or [_speed_clause(words)]
+
+
+def part_said_for_the_pace(clause: str, words: str, names: Sequence[str]) -> bool:
+    """Whether the words name a part of the path the pace may be meant for.
+
+    The pace clause's own part ("slow down near the box in the second half"), or one a clause that asks
+    nothing of its own names ("towards the end, go faster near the person", "while you're in the
+    middle"); not a number said of the speed ("half speed"), an end another clause keeps ("the
+    destination stays where it is") or moves ("move the final point 1 m forward").
+    """
+    others = [
+        c
+        for c in split_clauses(words, names)
+        if c != clause and not (names_in(c, names) or said_directions(c) or kept_ends([c]))
+    ]
+    return part_named(clause) is not None or any(part_named(c) for c in others)

@@ -11,7 +11,11 @@ words that name a scene object ("slow down until you stop at the box") give a pl
 profile, and are left to the other readers. The one speed step that scales or sets the speed of
 the whole path (no ``near=``, no ``part=``) becomes the profile. A profile that goes the other way
 from the pace the words ask ("reduce the speed evenly as you come to the goal" answered with
-'constant' or 'accelerate') is turned to the asked one. A review note says what changed.
+'constant' or 'accelerate') is turned to the asked one. And the other way: a slowing or speeding
+profile as the one speed step, where the one pace clause names no object, no part or end of the path,
+no stop or start from rest and nothing gradual ("run the route roughly 30% slower overall"), runs
+the robot down to a stop nobody asked for: it becomes ``scale_speed`` of the clause's factor. A review
+note says what changed.
 """
 
 from __future__ import annotations
@@ -20,11 +24,11 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import call_of, in_place_of, profile_kind
+from trajadapt.code_parse import SPEED_STEPS, call_of, called_name, in_place_of, profile_kind
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.paces import STOP_RAMP_START
+from trajadapt.readers.paces import STOP_RAMP_START, part_said_for_the_pace, speed_factor, stated_factor
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
-from trajadapt.readers.words import FASTER, SLOWER, names_in
+from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, asks_pace, names_in, part_named
 
 TO_A_STOP = re.compile(
     rf"{COMING_TO_REST.pattern}"
@@ -40,6 +44,12 @@ EVEN_PACE = re.compile(
     r"\b(?:constant|steady|uniform|same|unchanging|fixed)\s+(?:\w+\s+)?(?:speed|pace|velocity)", re.I
 )
 """Words of an even speed: a 'constant' profile is what they ask."""
+CHANGING_PACE = re.compile(
+    r"\b(?:gradual\w*|progressive\w*|steadily|increasing\w*|ramp\w*|more\s+and\s+more|decelerat\w*"
+    r"|accelerat\w*|as\s+(?:it|you)\s+go(?:es)?|in\s+steps|step\s+by\s+step|stepwise)\b",
+    re.I,
+)
+"""Words of a pace that changes along the path: a profile may be what they ask."""
 
 
 def asked_profile(words: str, names: Iterable[str]) -> str | None:
@@ -62,8 +72,9 @@ def asked_profile(words: str, names: Iterable[str]) -> str | None:
 
 def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one whole-path speed step made the asked profile (see the module)."""
-    words = " ".join(asked)
+    words, names = " ".join(asked), list(names)
     code, notes = _profiles_the_right_way(code, words)
+    code, notes = _one_scale_where_no_profile_is_said(code, words, names, notes)
     profile = asked_profile(words, names)
     lines = code.splitlines()
     uniform = [i for i, line in enumerate(lines) if _whole_path_pace(line)]
@@ -79,6 +90,38 @@ def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tupl
     note = f"`{lines[index].strip()}` -> `{step}`: the words ask a pace that {ends}, not one scale"
     lines[index] = in_place_of(lines[index], step)
     return "\n".join(lines), [*notes, note]
+
+
+def _one_scale_where_no_profile_is_said(
+    code: str, words: str, names: list[str], notes: list[str]
+) -> tuple[str, list[str]]:
+    """``code`` with its one slowing or speeding profile as a scale where the words ask none."""
+    pacing = [c for c in split_clauses(words, names) if asks_pace(c)]
+    lines = code.splitlines()
+    speed = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
+    if len(pacing) != 1 or len(speed) != 1 or not _asks_one_scale(pacing[0], names):
+        return code, notes
+    if part_said_for_the_pace(pacing[0], words, names):
+        return code, notes
+    clause, index = pacing[0], speed[0]
+    faster = bool(FASTER.search(clause))
+    kind = profile_kind(call_of(lines[index], ("speed_profile",)))
+    if kind is None or kind.value != ("accelerate" if faster else "decelerate"):
+        return code, notes
+    factor = stated_factor(clause, faster) or speed_factor(clause, faster)
+    variable = lines[index].split("=")[0].strip()
+    step = f"{variable} = scale_speed({variable}, {factor:g})"
+    note = f"`{lines[index].strip()}` -> `{step}`: the words ask one pace ({clause.strip()!r}), no profile"
+    lines[index] = in_place_of(lines[index], step)
+    return "\n".join(lines), [*notes, note]
+
+
+def _asks_one_scale(clause: str, names: list[str]) -> bool:
+    """Whether a pace clause asks only faster or only slower, of the whole path, with nothing changing."""
+    if bool(FASTER.search(clause)) == bool(SLOWER.search(clause)) or names_in(clause, names):
+        return False
+    said = (PART_OR_END, TO_A_STOP, FROM_REST, AT_REST, CHANGING_PACE)
+    return part_named(clause) is None and not any(pattern.search(clause) for pattern in said)
 
 
 def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:

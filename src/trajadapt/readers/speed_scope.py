@@ -38,9 +38,8 @@ from trajadapt.code_parse import (
 )
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.end_words import kept_ends
 from trajadapt.readers.object_words import WITHIN
-from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.paces import part_said_for_the_pace, speed_factor
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
     FASTER,
@@ -128,7 +127,7 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
     if scoped is None:
         return code, []
     clause, target = scoped
-    parts_said = _part_said_for_the_pace(clause, words, names)
+    parts_said = part_said_for_the_pace(clause, words, names)
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]
     if not unplaced and not parts_said and not COMING_TO_REST.search(words):
@@ -146,17 +145,6 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
     lines[index] = in_place_of(lines[index], after)
     note = f"`{before}` -> `{after}`: the instruction changes the speed near {target}, not everywhere"
     return "\n".join(lines), [note]
-
-
-def _part_said_for_the_pace(clause: str, words: str, names: list[str]) -> bool:
-    """Whether the words name a part of the path the pace may be meant for.
-
-    The pace clause's own part ("slow down near the box in the second half"), or one a clause of no
-    object names ("towards the end, go faster near the person"); not a number said of the speed ("half
-    speed") nor an end another clause keeps ("the destination stays where it is").
-    """
-    others = [c for c in split_clauses(words, names) if c != clause and not names_in(c, names)]
-    return part_named(clause) is not None or any(part_named(c) and not kept_ends([c]) for c in others)
 
 
 def _profile_placed(lines: list[str], clause: str, target: str) -> tuple[str, list[str]]:

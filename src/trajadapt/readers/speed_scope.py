@@ -14,10 +14,11 @@ example's place, not the user's) is placed where the words say: the part they na
 path. A review note says so. Measured on stored answers in docs/benchmarks.md.
 
 A slowing or speeding profile (``speed_profile(t, 'decelerate')``) as the code's one speed step,
-where that clause places the pace at its object and the words name no part or end of the path and
-no stop ("slow down on the approach to the person", "ease off as you near the lamp"), changes the
-speed towards the goal, not near the object: it becomes ``scale_speed`` of the clause's calibrated
-factor placed there.
+where that clause places the pace at its object, the words name no part of the path for the pace
+(``paces.part_said_for_the_pace``) and no stop ("slow down on the approach to the person", "go
+slower as you near the lamp"), changes the speed towards the goal, not near the object: it becomes
+``scale_speed`` of the clause's calibrated factor placed there. (The one speed clause is read by
+its speed words: "ease off as you near the lamp" has none, and is left as it is.)
 """
 
 from __future__ import annotations

@@ -128,6 +128,13 @@ def profile_kind(call: ast.Call | None) -> ast.Constant | None:
     return kind if isinstance(kind, ast.Constant) and isinstance(kind.value, str) else None
 
 
+def sole_speed_profile(lines: list[str]) -> tuple[int, str] | None:
+    """The index and kind of the code's one speed step, where it is a ``speed_profile`` of a constant kind."""
+    speed = [index for index, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
+    kind = profile_kind(call_of(lines[speed[0]], ("speed_profile",))) if len(speed) == 1 else None
+    return None if kind is None else (speed[0], str(kind.value))
+
+
 def detected_names(node: ast.AST) -> list[str]:
     """The names passed to ``detect_objects`` anywhere in ``node`` (a call, a statement, a program)."""
     return [

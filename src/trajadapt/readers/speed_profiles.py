@@ -24,7 +24,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import SPEED_STEPS, call_of, called_name, in_place_of, profile_kind
+from trajadapt.code_parse import call_of, in_place_of, profile_kind, sole_speed_profile
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START, part_said_for_the_pace, speed_factor, stated_factor
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
@@ -98,15 +98,14 @@ def _one_scale_where_no_profile_is_said(
     """``code`` with its one slowing or speeding profile as a scale where the words ask none."""
     pacing = [c for c in split_clauses(words, names) if asks_pace(c)]
     lines = code.splitlines()
-    speed = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
-    if len(pacing) != 1 or len(speed) != 1 or not _asks_one_scale(pacing[0], names):
+    profile = sole_speed_profile(lines)
+    if len(pacing) != 1 or profile is None or not _asks_one_scale(pacing[0], names):
         return code, notes
     if part_said_for_the_pace(pacing[0], words, names):
         return code, notes
-    clause, index = pacing[0], speed[0]
+    (clause,), (index, kind) = pacing, profile
     faster = bool(FASTER.search(clause))
-    kind = profile_kind(call_of(lines[index], ("speed_profile",)))
-    if kind is None or kind.value != ("accelerate" if faster else "decelerate"):
+    if kind != ("accelerate" if faster else "decelerate"):
         return code, notes
     factor = stated_factor(clause, faster) or speed_factor(clause, faster)
     variable = lines[index].split("=")[0].strip()

@@ -29,13 +29,10 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import (
     PLACED_SPEED_STEPS,
-    SPEED_STEPS,
     assigned_call,
-    call_of,
-    called_name,
     in_place_of,
     placed_near,
-    profile_kind,
+    sole_speed_profile,
 )
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
@@ -150,12 +147,12 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
 
 def _profile_placed(lines: list[str], clause: str, target: str) -> tuple[str, list[str]]:
     """``lines`` with their one speed step, a slowing or speeding profile, made a scale near ``target``."""
-    speed = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
+    profile = sole_speed_profile(lines)
     slower, faster = bool(SLOWER.search(clause)), bool(FASTER.search(clause))
-    kind = profile_kind(call_of(lines[speed[0]], ("speed_profile",))) if len(speed) == 1 else None
-    if kind is None or kind.value not in ("decelerate", "accelerate") or slower == faster:
+    if profile is None or profile[1] not in ("decelerate", "accelerate") or slower == faster:
         return "\n".join(lines), []
-    index, variable = speed[0], lines[speed[0]].split("=")[0].strip()
+    index = profile[0]
+    variable = lines[index].split("=")[0].strip()
     reach = WITHIN.search(clause)
     radius = f", radius={float(reach.group(1)):g}" if reach is not None else ""
     step = (

@@ -14,7 +14,8 @@ import pytest
 from trajadapt.readers import read_against_words
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
-from trajadapt.readers.height_asks import asked_heights, relate_heights
+from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.height_words import asked_heights
 from trajadapt.readers.object_words import ends_at_the_place
 from trajadapt.readers.paces import stated_factor
 from trajadapt.readers.stop_words import COMING_TO_REST

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.readers.height_asks import asked_heights, relate_heights
+from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.height_words import asked_heights
 
 CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
 

@@ -88,6 +88,7 @@ def test_no_reader_imports_another_reader() -> None:
     helpers = {
         "trajadapt.readers.words",
         "trajadapt.readers.direction_words",
+        "trajadapt.readers.height_words",
         "trajadapt.readers.end_words",
         "trajadapt.readers.stop_words",
         "trajadapt.readers.part_words",

@@ -24,102 +24,21 @@ with a metric unit is read in metres ("at least 20 cm up" is 0.2).
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterable
-from typing import NamedTuple
 
 from trajadapt.code_parse import DISTANCE_STEPS, after_last_step, assigned_call, in_place_of, skill_program
-from trajadapt.readers.clause_amounts import direction_amounts, in_metres
-from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import NUMBER_TEXT
+from trajadapt.readers.clause_amounts import direction_amounts
+from trajadapt.readers.height_words import (
+    GROUND,
+    HEIGHT_STEPS,
+    MIDDLE,
+    OWN_LIMITS,
+    SIDEWAYS,
+    VERTICAL,
+    AskedHeight,
+    clause_heights,
+)
 from trajadapt.skills import SKILL_NAMES
-
-NUMBER = rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|per\s*cent|percent|times\b|x\b))"
-"""A height's number: not a share or a factor ("slow down by at least 30 percent" gives no height)."""
-LEVEL = r"(?:height|altitude|elevation)"
-BELOW = (
-    rf"below|under(?:neath)?|lower than|at most|cap\w*(?:\s+(?:the\s+|its\s+|your\s+)?{LEVEL})?\s+at"
-    rf"|ceiling(?:\s+{LEVEL})?\s+(?:of|at|is)|(?:max(?:imum)?|upper\s+limit)\s+{LEVEL}\s+(?:of|at|is)"
-)
-_MINIMUM = rf"(?:min(?:imum)?|lower\s+limit)\s+{LEVEL}\s+(?:of|at|is)"
-ABOVE = rf"above|over|higher than|more than|at least|exceed\w*|{_MINIMUM}"
-"""Words of a limit before a height: "below 0.3", "cap the altitude at 1.5", "a ceiling of 2"; "above",
-"a minimum altitude of 0.5"."""
-AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover|stay|keep|cruise|move)\w* at"
-NAMED = rf"(?:(?:an?\s+|the\s+)?{LEVEL}\s+of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
-"""How a height may be named before its number: "a height of 0.2", "an altitude of 0.1", "z = 0.2",
-"a z of 0.2"."""
-RELATIONS = (
-    ("stay_below", re.compile(rf"\b(?:{BELOW})\s+{NAMED}{NUMBER}", re.I)),
-    ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+{NAMED}{NUMBER}", re.I)),
-    ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
-)
-BAND = re.compile(
-    rf"\b(?:between|from)\s+{NAMED}(-?(?:{NUMBER_TEXT}))\s+(?:and|to)\s+{NAMED}(-?(?:{NUMBER_TEXT}))(?![\d.])",
-    re.I,
-)
-"""A band of heights: "keep the height between z = -0.2 and z = 0.2" is above the one, below the other."""
-HEIGHT_STEPS = ("set_height", "stay_below", "stay_above")
-VERTICAL = re.compile(
-    r"\b(?:above|below|under(?:neath)?|higher\s+than|lower\s+than|altitude|height|elevation|z\s*=|a\s+z\s+of"
-    rf"|off\s+the\s+(?:ground|floor))|(?<![\w.]){NUMBER_TEXT}\s*(?:m|cm)?\s+up\b",
-    re.I,
-)
-"""Words that speak of height itself ("above", "altitude", "off the ground", "at least 0.4 m up"), so
-that a height they give may be added as a step."""
-MIDDLE = re.compile(r"\b(?:middle|mid-?(?:flight|way|route|path|air)|midway|halfway)\b", re.I)
-"""Words that hold a limit through the middle of the path: there it keeps the start and the goal."""
-OWN_LIMITS = ("stay_below", "stay_above")
-SIDEWAYS = re.compile(r"\b(?:away|from|clearance|distance|apart)\b", re.I)
-"""Words of a distance from something: a number after "more than" there is no height."""
-GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
-
-
-NEGATION = re.compile(
-    r"(?:\b(?:not|never|no|nowhere)\b|n't\b)(?:\s+(?!(?:and|but|or|then|while|so)\b)[\w'-]+){0,6}\s*$", re.I
-)
-"""A negation earlier in the clause, with no joining word after it: "don't let the arm go below"."""
-FLIPPED = {"stay_below": "stay_above", "stay_above": "stay_below", "set_height": "set_height"}
-
-
-def asked_heights(words: str) -> list[tuple[str, float]]:
-    """The (skill, height) pairs the words give ("at a height of 0.1" -> ('set_height', 0.1)).
-
-    A negation before the relation in its clause turns it round ("never higher than 3", "don't let
-    it drop below 0.5" -> above 0.5). A clause of a distance from something ("at least 0.15 from the
-    dog") gives no height unless it speaks of height itself.
-    """
-    return [(asked.skill, asked.height) for asked in _clause_heights(words)]
-
-
-class AskedHeight(NamedTuple):
-    """A height the words give: its step, its number, its clause, and that clause with the one before."""
-
-    skill: str
-    height: float
-    clause: str
-    held: str  # "keep the middle part low, at or below z = 0": the clause before says where it holds
-
-
-def _clause_heights(words: str) -> list[AskedHeight]:
-    """Each height the words give, in their order."""
-    found: list[AskedHeight] = []
-    clauses = split_clauses(in_metres(words))
-    for index, clause in enumerate(clauses):
-        held = " ".join(clauses[max(index - 1, 0) : index + 1])
-        if SIDEWAYS.search(clause) and not (VERTICAL.search(clause) or GROUND.search(clause)):
-            continue
-        at: list[tuple[int, str, float]] = []
-        for skill, pattern in RELATIONS:
-            for match in pattern.finditer(clause):
-                if any(start == match.start(1) for start, _, _ in at):
-                    continue
-                negated = NEGATION.search(clause[: match.start()]) is not None
-                at.append((match.start(1), FLIPPED[skill] if negated else skill, float(match.group(1))))
-        found += [AskedHeight(skill, height, clause, held) for _, skill, height in sorted(at)]
-        if VERTICAL.search(clause):
-            found += [AskedHeight(skill, height, clause, held) for skill, height in _band(clause)]
-    return found
 
 
 def _added_band(code: str, heights: list[AskedHeight]) -> tuple[str, list[str]]:
@@ -137,19 +56,10 @@ def _is_one_band(heights: list[AskedHeight]) -> bool:
     return skills == ["stay_above", "stay_below"] and len({asked.clause for asked in heights}) == 1
 
 
-def _band(clause: str) -> list[tuple[str, float]]:
-    """The two limits of a band of heights the clause gives (``BAND``), lower first."""
-    found = BAND.search(clause)
-    if found is None:
-        return []
-    low, high = sorted((float(found.group(1)), float(found.group(2))))
-    return [("stay_above", low), ("stay_below", high)] if low < high else []
-
-
 def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one height step of the asked number given the asked relation, and a note."""
     words = " ".join(asked)
-    heights = _clause_heights(words)
+    heights = clause_heights(words)
     if not heights:
         return _height_as_change(code, words)
     if _is_one_band(heights) and not any(_height_step(x, options=True) for x in code.splitlines()):

@@ -8,6 +8,7 @@ from collections.abc import Sequence
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.end_words import kept_ends
+from trajadapt.readers.height_words import asked_heights
 from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import (
     FASTER,
@@ -62,6 +63,17 @@ def stated_factor(words: str, faster: bool) -> float | None:
     return round(1 + (factor - 1) * LEAST_MARGIN, 6) if AT_LEAST.search(clause) else factor
 
 
+def asked_factor(words: str, faster: bool) -> float:
+    """The factor the speed clause of ``words`` asks: the one it states, else its calibrated size.
+
+    >>> asked_factor("slow to half speed on the approach to the lamp", faster=False)
+    0.5
+    >>> asked_factor("ease off a little as you near the lamp", faster=False) > 0.5
+    True
+    """
+    return stated_factor(words, faster) or speed_factor(words, faster)
+
+
 AT_LEAST = re.compile(r"\b(?:at\s+least|no\s+less\s+than|a\s+minimum\s+of|or\s+more)\b", re.I)
 """Words that state the least change of a pace: "at least 25% slower", "20% faster or more"."""
 LEAST_MARGIN = 1.2
@@ -106,11 +118,13 @@ def part_said_for_the_pace(clause: str, words: str, names: Sequence[str]) -> boo
     The pace clause's own part ("slow down near the box in the second half"), or one a clause that asks
     nothing of its own names ("towards the end, go faster near the person", "while you're in the
     middle"); not a number said of the speed ("half speed"), an end another clause keeps ("the
-    destination stays where it is") or moves ("move the final point 1 m forward").
+    destination stays where it is") or moves ("move the final point 1 m forward"), nor a part where
+    another clause holds a height ("through the middle keep above 0.3").
     """
     others = [
         c
         for c in split_clauses(words, names)
-        if c != clause and not (names_in(c, names) or said_directions(c) or kept_ends([c]))
+        if c != clause
+        and not (names_in(c, names) or said_directions(c) or kept_ends([c]) or asked_heights(c))
     ]
     return part_named(clause) is not None or any(part_named(c) for c in others)

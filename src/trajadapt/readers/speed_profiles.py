@@ -26,7 +26,7 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import call_of, in_place_of, profile_kind, sole_speed_profile
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.paces import STOP_RAMP_START, part_said_for_the_pace, speed_factor, stated_factor
+from trajadapt.readers.paces import STOP_RAMP_START, asked_factor, part_said_for_the_pace
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
 from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, asks_pace, names_in, part_named
 
@@ -107,7 +107,7 @@ def _one_scale_where_no_profile_is_said(
     faster = bool(FASTER.search(clause))
     if kind != ("accelerate" if faster else "decelerate"):
         return code, notes
-    factor = stated_factor(clause, faster) or speed_factor(clause, faster)
+    factor = asked_factor(clause, faster)
     variable = lines[index].split("=")[0].strip()
     step = f"{variable} = scale_speed({variable}, {factor:g})"
     note = f"`{lines[index].strip()}` -> `{step}`: the words ask one pace ({clause.strip()!r}), no profile"

@@ -120,3 +120,25 @@ def test_the_readers_do_not_read_a_statement_of_the_problem_as_a_request() -> No
         "t = scale_speed(t, 1.4, near=detect_objects('lamp'), radius=0.3)",
         "t = move_closer(t, detect_objects('Sofa'))",
     ]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "begin 0.5 further forward and keep the goal where it is",
+        "have the path start 0.3 more to the left",
+    ],
+)
+def test_a_whole_path_shift_for_a_start_move_becomes_the_start_move(words: str) -> None:
+    """A shift keeps the start: for a start move it is the model's reading of it, not a move of its own."""
+    direction = "front" if "forward" in words else "left"
+    code, _ = add_asked_directions(program(f"t = shift(t, '{direction}', 0.3)"), [words])
+    assert [called for called in code.splitlines()[1:-1] if "shift" in called] == [
+        f"t = shift_start(t, '{direction}')"
+    ]
+
+
+def test_a_shift_another_clause_asks_stays_beside_the_start_move() -> None:
+    words = "begin 0.2 more to the left, then move the whole path left by 0.2"
+    code, _ = add_asked_directions(program("t = shift(t, 'left', 0.2)"), [words])
+    assert code.splitlines()[1:3] == ["t = shift_start(t, 'left')", "t = shift(t, 'left', 0.2)"]

@@ -15,7 +15,9 @@ the clause's number ("by 0.1"). A clause that asks one end of the path to move (
 now", "finish 0.3 further to the right", "start further left"; not a move past the goal: "once
 there, go back") gets ``shift_goal`` / ``shift_start`` in the same way, when no step moves that end
 that way. Where exactly one shift of the code goes in a direction no word says, it is the model's
-guess at the asked move, and the asked step takes its place instead of being added. Code that is
+guess at the asked move, and the asked step takes its place instead of being added; so does the one
+whole-path shift the way a start move asks, when no other clause asks the path to go that way (a
+shift keeps the start, so it cannot be the start's move). Code that is
 not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
 a reader left out every step it had ("0.3 over to the right" answered with ``pass_over`` of objects
@@ -67,7 +69,8 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
     heights = any(called_name(line) in HEIGHT_STEPS for line in lines)
     start, variable = program[0] + 1, program[1]
     added: list[str] = []
-    for clause in (c for words in asked for c in split_clauses(words)):
+    clauses = [c for words in asked for c in split_clauses(words)]
+    for clause in clauses:
         skill, direction = asked_end_move(clause)
         made = _end_moves(lines, END_NAMES.get(skill, ""))
         if direction is None:
@@ -79,11 +82,12 @@ def add_asked_directions(code: str, asked: Iterable[str]) -> tuple[str, list[str
         word = intensity_word(clause)
         step = f"{variable} = {skill}({variable}, {direction!r}{f', {word!r}' if word else ''})"
         what = "go" if skill == "shift" else f"move the {END_NAMES[skill]}"
-        guess = _unsaid_shift(lines, words)
+        guess = _guessed_step(lines, words, skill, direction, [c for c in clauses if c != clause])
         if guess is not None and not added:
-            notes.append(f"`{lines[guess].strip()}` -> `{step.strip()}`: the words ask to {what} {direction} "
-                         f"({clause.strip()!r}), and no word asks the step's direction")  # fmt: skip
-            lines[guess] = in_place_of(lines[guess], step)
+            index, why = guess
+            notes.append(f"`{lines[index].strip()}` -> `{step.strip()}`: the words ask to {what} {direction} "
+                         f"({clause.strip()!r}), and {why}")  # fmt: skip
+            lines[index] = in_place_of(lines[index], step)
         else:
             added.append(step)
             notes.append(
@@ -121,14 +125,47 @@ def _directed_part_moves(lines: list[str], asked: Iterable[str], words: str) -> 
 
 
 def _end_moves(lines: list[str], end: str) -> set[str]:
-    """The directions the steps move one end in: the whole path's, that end's own, or its part's."""
-    own = {"goal": ("shift_goal", "extend", "append_segment"), "start": ("shift_start",)}.get(end, ())
+    """The directions the steps move one end in: that end's own, its part's, or the whole path's.
+
+    A whole-path ``shift`` keeps the start (it blends in after it), so it moves only the goal.
+    """
+    own = {"goal": ("shift", "shift_goal", "extend", "append_segment"), "start": ("shift_start",)}
     return {
         direction
         for line in lines
-        if called_name(line) in ("shift", *own) or (called_name(line) == "shift_part" and end in line)
+        if called_name(line) in own.get(end, ("shift",))
+        or (called_name(line) == "shift_part" and end in line)
         for direction in _directions(line)
     }
+
+
+def _guessed_step(
+    lines: list[str], words: str, skill: str, direction: str, others: list[str]
+) -> tuple[int, str] | None:
+    """The step that is the model's reading of the asked move, with why, or None."""
+    unsaid = _unsaid_shift(lines, words)
+    if unsaid is not None:
+        return unsaid, "no word asks the step's direction"
+    start_shift = _shift_for_the_start(lines, direction, others) if skill == "shift_start" else None
+    if start_shift is not None:
+        return start_shift, "a shift keeps the start"
+    return None
+
+
+def _shift_for_the_start(lines: list[str], direction: str, others: list[str]) -> int | None:
+    """The index of the one whole-path shift the start's way that no other clause asks, else None.
+
+    "Start half a metre further forward" answered ``shift(t, 'front', 0.5)``: a shift keeps the start,
+    so it is the model's reading of the start's move, and ``shift_start`` takes its place.
+    """
+    if any(asked_move(other) == direction for other in others):
+        return None
+    shifts = [
+        index
+        for index, line in enumerate(lines)
+        if called_name(line) == "shift" and direction in _directions(line)
+    ]
+    return shifts[0] if len(shifts) == 1 else None
 
 
 def _unsaid_shift(lines: list[str], words: str) -> int | None:

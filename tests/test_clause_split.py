@@ -236,3 +236,15 @@ def test_a_colon_after_a_request_or_anything_else_still_breaks(words, clauses):
 )
 def test_an_end_word_used_as_a_verb_after_an_end_still_breaks(words, clauses):
     assert split_clauses(words, NAMES) == clauses
+
+
+@pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        ("keep above the table, and fly more slowly overall", ("keep above the table", "fly more slowly overall")),
+        ("stay left of the lamp and apply a gentler pace", ("stay left of the lamp", "apply a gentler pace")),
+        ("go left by 0.2 and slowly", ("go left by 0.2 and slowly",)),
+    ],
+)
+def test_a_verb_that_ends_like_an_adverb_starts_a_request(words, clauses):
+    assert split_clauses(words, NAMES) == clauses

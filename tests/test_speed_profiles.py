@@ -119,3 +119,17 @@ def test_a_profile_for_one_pace_of_the_whole_path_is_a_scale(words: str, step: s
 def test_a_profile_the_words_may_ask_stays(words: str) -> None:
     code = program("t = speed_profile(t, 'decelerate', start=0.6)")
     assert profile_paces(code, [words], NAMES)[0] == code
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "in the middle stay below 1.2 m, and fly a little slower overall",
+        "keep above 0.4 through the middle section; also fly slower",
+    ],
+)
+def test_a_part_where_a_height_is_held_is_not_the_pace_part(words: str) -> None:
+    """The clause naming the middle asks a height of its own: the pace is the whole path's."""
+    code = program("t = speed_profile(t, 'decelerate')")
+    step = profile_paces(code, [words], NAMES)[0].splitlines()[1]
+    assert step.startswith("t = scale_speed(t, 0.") and "part" not in step

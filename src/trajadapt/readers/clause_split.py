@@ -272,7 +272,16 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
     if not [w for w in words if w not in DIRECTION_WORDS]:
         return False
     first = piece.split()[0].lower()
-    return not (_is_participle(first) or first.endswith("ly"))
+    return not (_is_participle(first) or _is_adverb(first))
+
+
+LY_VERBS = frozenset("fly apply supply rely reply multiply comply".split())
+"""Verbs that end like an adverb: "and fly more slowly" is a request, "and slowly" is not."""
+
+
+def _is_adverb(word: str) -> bool:
+    """A word that qualifies the piece before it ('slowly', 'smoothly'), not a verb ending so ('fly')."""
+    return word.endswith("ly") and word not in LY_VERBS
 
 
 TOPIC_WORDS = frozenset(

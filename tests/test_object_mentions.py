@@ -56,3 +56,12 @@ def test_never_closer_than_is_a_least_distance():
         "do not let the robot come any nearer than 0.3 to the drum",
     ):
         assert object_asks(words, NAMES)["drum"].relation == "away", words
+
+
+def test_never_within_is_a_least_distance():
+    for words in (
+        "the robot should never come within 0.3 of the drum",
+        "don't let it get within 0.3 of the drum",
+        "do not pass within 0.3 of the drum",
+    ):
+        assert object_asks(words, NAMES)["drum"].relation == "away", words

@@ -165,7 +165,7 @@ PLACING = re.compile(r"^\W*(?:while|when\w*|as|once|if|until|passing|going|drivi
 
 
 MINIMUM_DISTANCE = re.compile(
-    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
+    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:(?:closer|nearer|less)\s+than|within)"
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
     r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of)\s*"
@@ -174,7 +174,8 @@ MINIMUM_DISTANCE = re.compile(
 )
 """A clearance the words state as a least distance: "at least 0.2", "no closer than 0.2", "never
 closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
-between the negation and the comparison), "a minimum clearance of 0.2", "a clearance of 0.2"."""
+between the negation and the comparison), "never come within 0.2", "a minimum clearance of 0.2", "a
+clearance of 0.2"."""
 
 
 def whole_words(text: str) -> str:

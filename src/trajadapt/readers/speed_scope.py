@@ -37,7 +37,7 @@ from trajadapt.code_parse import (
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN
-from trajadapt.readers.paces import part_said_for_the_pace, speed_factor
+from trajadapt.readers.paces import asked_factor, part_said_for_the_pace
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
     FASTER,
@@ -87,7 +87,9 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
     """Each speed step placed near an end of the path the words never name, placed where they say.
 
     ``scale_speed(t, 1.4, near=detect_objects('goal'))`` for "speed up in the middle": the part the
-    words name (``part='middle'``), else the whole path.
+    words name (``part='middle'``), else the whole path. A place at the path's own last or first
+    waypoint (``near=t[-1]`` for "pick up the pace over the final stretch") is, where the words name
+    that end, the part the pace clause names, else ``'end'`` / ``'start'``.
     """
     lines, notes = code.splitlines(), []
     for index, line in enumerate(lines):
@@ -95,10 +97,14 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         if found is None or found[2] not in PLACED_SPEED_STEPS:
             continue
         tree, call, _ = found
-        end = _end_named(placed_near(call))
-        if end is None or ENDS_SAID[end].search(words):
+        waypoint = _end_waypoint(call)
+        end = waypoint or _end_named(placed_near(call))
+        said = end is not None and ENDS_SAID[end].search(words) is not None
+        if end is None or (said and waypoint is None):
             continue
         part = part_named(" ".join(c for c in split_clauses(words) if asks_pace(c)))
+        if said:
+            part = part or ("end" if end == "goal" else "start")
         call.args = call.args[:2]  # a place given in order (near, radius, part) goes with the keywords
         call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
         if part:
@@ -106,10 +112,26 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         before, after = line.strip(), ast.unparse(tree)
         lines[index] = in_place_of(line, after)
         where = f"in the {part}" if part else "everywhere"
-        notes.append(
-            f"`{before}` -> `{after}`: the words never name the {end}; they change the speed {where}"
+        why = (
+            f"a waypoint is no place for a pace near the {end}" if said else f"the words never name the {end}"
         )
+        notes.append(f"`{before}` -> `{after}`: {why}; the words change the speed {where}")
     return "\n".join(lines), notes
+
+
+def _end_waypoint(call: ast.Call) -> str | None:
+    """'goal' or 'start' where the speed step's place is the path's own last or first waypoint (``t[-1]``)."""
+    near = next(
+        (k.value for k in call.keywords if k.arg == "near"), call.args[2] if len(call.args) > 2 else None
+    )
+    if not isinstance(near, ast.Subscript) or not isinstance(near.value, ast.Name):
+        return None
+    index = near.slice.elts[0] if isinstance(near.slice, ast.Tuple) and near.slice.elts else near.slice
+    try:
+        value = ast.literal_eval(index)
+    except ValueError:
+        return None
+    return {-1: "goal", 0: "start"}.get(value) if isinstance(value, int) else None
 
 
 def _end_named(name: str | None) -> str | None:
@@ -156,7 +178,7 @@ def _profile_placed(lines: list[str], clause: str, target: str) -> tuple[str, li
     reach = WITHIN.search(clause)
     radius = f", radius={float(reach.group(1)):g}" if reach is not None else ""
     step = (
-        f"{variable} = scale_speed({variable}, {speed_factor(clause, faster):g}, "
+        f"{variable} = scale_speed({variable}, {asked_factor(clause, faster):g}, "
         f"near=detect_objects({target!r}){radius})"
     )
     before = lines[index].strip()

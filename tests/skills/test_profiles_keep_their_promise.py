@@ -46,6 +46,17 @@ def test_decelerating_past_a_rest_still_moves_and_stops_at_the_goal(values, rest
     assert after[:-1, 3].max() > 0.0  # not held at 0 from the rest on
 
 
+@settings(max_examples=100, deadline=None)
+@given(st.integers(8, 60), st.integers(1, 5), st.floats(0.2, 3.0))
+def test_decelerating_a_path_that_speeds_up_from_rest_slows_it_over_its_last_part_gradually(n, resting, top):
+    values = [0.0] * resting + list(np.linspace(0.0, top, n - resting + 1)[1:])
+    before = path(values)
+    after = speed_profile(before, "decelerate")
+    tail = before[:, 0] >= 0.7
+    assert np.all(np.diff(after[tail, 3]) <= 1e-12) and after[-1, 3] == 0.0
+    assert after[-2, 3] > 0.0 and after[tail, 3].mean() < 0.6 * before[tail, 3].mean()
+
+
 def test_decelerating_a_path_that_already_slows_to_the_goal_slows_it_further():
     slowing = path(list(np.linspace(1.0, 0.0, 40)))  # already the old uniform ramp
     tail = slowing[:, 0] >= 0.7

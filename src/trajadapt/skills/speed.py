@@ -162,14 +162,17 @@ def speed_profile(
     waypoint faster than it was, accelerating never slower; accelerating a path already at its top
     speed goes up to the phrase table's "faster" factor of it, and decelerating a path that already
     slows scales its own speeds down by the same uniform ramp, never rising. A path at rest on the
-    way (at its start, or a stop) decelerates from its fastest waypoint after its last rest, so that
-    it still moves and comes to a stop at the goal.
+    way (at its start, or a stop) speeds up from its last rest as it did until it meets a ramp from
+    its fastest speed after that rest down to 0 at the goal, so that it still moves and slows
+    gradually to a stop at the goal.
     """
     t = as_trajectory(trajectory)
     s = progress(t)
     begin = float(np.clip(start, 0.0, 0.99))
-    if str(kind).strip().lower() == "decelerate":
-        begin = _after_the_last_rest(t, s, begin)
+    rest = _last_rest(t, s, begin)
+    if str(kind).strip().lower() == "decelerate" and rest is not None:
+        t[:, 3] = _slowed_after_a_rest(t, s, rest)
+        return t
     local = np.clip((s - begin) / (1.0 - begin), 0.0, 1.0)
     entry = float(np.interp(begin, s, t[:, 3]))
     top = float(peak) if peak is not None else float(t[:, 3].max())
@@ -194,17 +197,28 @@ def speed_profile(
     return t
 
 
-def _after_the_last_rest(t: Array, s: Array, begin: float) -> float:
-    """Where a slowing from ``begin`` starts: after the path's last rest before its goal, if any.
-
-    A path at rest at ``begin`` or after it (its start, or a stop on the way) would be held at 0 from
-    there on by a slowing that never rises: the slowing starts instead at the fastest waypoint after
-    that last rest, so the path still moves and comes to a stop at the goal.
-    """
+def _last_rest(t: Array, s: Array, begin: float) -> int | None:
+    """The index of the path's last waypoint at rest at ``begin`` or after it, before its goal, if any."""
     resting = np.flatnonzero((s >= begin) & (t[:, 3] <= 1e-9))
     resting = resting[resting < len(t) - 1]
-    if not len(resting):
-        return begin
-    after = np.arange(resting[-1], len(t) - 1)
-    fastest = after[int(np.argmax(t[after, 3]))]
-    return float(min(s[fastest], 0.99))
+    return int(resting[-1]) if len(resting) else None
+
+
+def _slowed_after_a_rest(t: Array, s: Array, rest: int) -> Array:
+    """The speeds of a path that rests at waypoint ``rest`` (its start, or a stop), slowed to 0 at the goal.
+
+    A slowing from the rest itself would hold the path at 0 from there on. Instead the speeds after
+    the rest are capped by a uniform ramp from the fastest speed after it down to 0 at the goal: the
+    path speeds up from the rest as it did until it meets the ramp, then slows along it, never rising
+    again ("decelerate gradually to rest at the goal" on a path that speeds up from its start all the
+    way slows over its whole second part, not at its last waypoint).
+    """
+    first = float(min(s[rest], 0.99))
+    local = np.clip((s - first) / (1.0 - first), 0.0, 1.0)
+    top = float(t[rest:, 3].max())
+    speeds = t[:, 3].copy()
+    after = np.arange(len(t)) >= rest
+    speeds[after] = np.minimum(t[after, 3], top * (1.0 - local[after]))
+    peak = rest + int(np.argmax(speeds[rest:]))
+    speeds[peak:] = np.minimum.accumulate(speeds[peak:])
+    return np.maximum(speeds, 0.0)

@@ -241,10 +241,26 @@ def test_an_end_word_used_as_a_verb_after_an_end_still_breaks(words, clauses):
 @pytest.mark.parametrize(
     ("words", "clauses"),
     [
-        ("keep above the table, and fly more slowly overall", ("keep above the table", "fly more slowly overall")),
+        (
+            "keep above the table, and fly more slowly overall",
+            ("keep above the table", "fly more slowly overall"),
+        ),
         ("stay left of the lamp and apply a gentler pace", ("stay left of the lamp", "apply a gentler pace")),
         ("go left by 0.2 and slowly", ("go left by 0.2 and slowly",)),
     ],
 )
 def test_a_verb_that_ends_like_an_adverb_starts_a_request(words, clauses):
     assert split_clauses(words, NAMES) == clauses
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "lift the path a little, keeping the start and goal as they are",
+        "leave the start and end alone",
+        "hold the start and finish exactly as before",
+    ],
+)
+def test_both_ends_named_before_a_word_beginning_like_an_article_stay_one_clause(words):
+    """'goal *as* they are': the words that make the second end a verb are whole words ('a', 'an')."""
+    assert len(split_clauses(words, NAMES)) == 1

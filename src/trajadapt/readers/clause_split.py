@@ -203,8 +203,8 @@ FIRST_END = re.compile(
     rf"\b(?:the|its|both)\s+{_END_NOUN}(?:\s+(?:point|position|pose|location|waypoint))?$", re.I
 )
 SECOND_END = re.compile(
-    rf"^(?:the\s+)?{_END_NOUN}\b(?!\s+(?:at|near|by|up|with|on|in|beside|next|there|here|right|over|again"
-    r"|to|further|farther|higher|lower|more|less|a|an|\d|\.\d|[a-z]+ing\b))",
+    rf"^(?:the\s+)?{_END_NOUN}\b(?!\s+(?:(?:at|near|by|up|with|on|in|beside|next|there|here|right|over|again"
+    r"|to|further|farther|higher|lower|more|less|a|an|[a-z]+ing)\b|\d|\.\d))",
     re.I,
 )
 """Both ends of the path named together: "the start *and* end points", "the start *and* the goal" (one

@@ -75,9 +75,7 @@ def test_a_stop_with_a_count_is_a_pause_and_the_path_goes_on() -> None:
 @pytest.mark.parametrize(
     "code",
     [
-        program(
-            "t = wait(t, 'middle', 2)"
-        ),  # the model paused: its count is the stated-amount readers' business
+        program("t = wait(t, 'middle', 5)"),  # the model paused as asked
         "t = get_trajectory()\nt[5:] = t[5]\nmodified_trajectory = t",  # code the readers cannot follow
     ],
 )
@@ -120,3 +118,23 @@ def test_a_stop_that_only_begins_a_pause_leaves_beside_the_wait() -> None:
 def test_a_stop_of_its_own_stays(words: str) -> None:
     code = program("t = stop_at(t, detect_objects('cup'))", "t = wait(t, detect_objects('vase'), 3)")
     assert add_asked_pauses(code, [words], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "count"),
+    [
+        ("pause beside the vase for 6 timesteps", 6),
+        ("when you reach the blue cup, stay still briefly", SOME_TIME_STEPS),
+    ],
+)
+def test_the_one_wait_takes_the_one_pause_count(words: str, count: int) -> None:
+    code, notes = add_asked_pauses(program("t = wait(t, detect_objects('vase'), 1)"), [words], NAMES)
+    assert code.splitlines()[1] == f"t = wait(t, detect_objects('vase'), {count})" and notes
+
+
+def test_a_wait_with_the_asked_count_or_two_pauses_stay() -> None:
+    code = program("t = wait(t, detect_objects('vase'), 6)")
+    assert add_asked_pauses(code, ["pause beside the vase for 6 timesteps"], NAMES) == (code, [])
+    two = program("t = wait(t, detect_objects('vase'), 2)")
+    words = "wait at the vase for 4 steps, then wait at the cup for 7 steps"
+    assert add_asked_pauses(two, [words], NAMES) == (two, [])  # which wait is which pause: not read

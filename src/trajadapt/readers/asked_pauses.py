@@ -2,27 +2,29 @@
 
 The pause twin of ``asked_relations`` (issue #24 item 1, "every clause gets its step"): "hold
 position at the trajectory midpoint for five timesteps" came back as two shifts, "stop near the fan
-for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of
-timesteps is a pause: the path goes on after it). A clause asks a pause when it has a word for
-stopping or staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position",
-"hover", "linger", "idle", "dwell") and a count of timesteps ("for 10 timesteps", "5 steps"); its
-place is the one scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
-midpoint", "halfway", "the destination"), or, when it points back ("hold there"), follows a
-lead-in ("once at the destination, hold ...") or a pause with no count ("stop at the midpoint and
-idle for 5 timesteps"), that of the clause before. A length said without a count ("for a while",
-"for some time", "briefly") is ``SOME_TIME_STEPS`` timesteps. When no ``wait`` step is
-in the code, the clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>,
-<count>)`` is added as the last step. Code that is not made of skill calls alone is left alone. A
-review note says so.
+for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of timesteps
+is a pause: the path goes on after it). A clause asks a pause when it has a word for stopping or
+staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position", "hover",
+"linger", "idle", "dwell") and a count of timesteps ("for 10 timesteps", "5 steps"); its place is
+the one scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
+midpoint", "halfway", "the destination"), or, when it points back ("hold there"), follows a lead-in
+("once at the destination, hold ...") or a pause with no count ("stop at the midpoint and idle for 5
+timesteps"), that of the clause before. A length said without a count ("for a while", "for some
+time", "briefly") is ``SOME_TIME_STEPS`` timesteps. When no ``wait`` step is in the code, the
+clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>, <count>)`` is
+added as the last step; where the words ask one pause and the code has one ``wait`` with another
+count ("hold still for a moment" answered ``wait(t, plate, 1)``), it takes the asked one. Code that
+is not made of skill calls alone is left alone. A review note says so.
 """
 
 from __future__ import annotations
 
+import ast
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import after_last_step, called_name, in_place_of, skill_program
+from trajadapt.code_parse import after_last_step, assigned_call, called_name, in_place_of, skill_program
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.stop_words import STOPPING
 from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
@@ -102,6 +104,8 @@ def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> t
     notes: list[str] = []
     if not any(called_name(line) == "wait" for line in lines):
         _add_waits(lines, notes, pauses, program[1])
+    elif len(pauses) == 1:
+        _count_as_asked(lines, notes, pauses[0])
     if pauses and not _stops_for_good(words, names, pauses):
         for line in [x for x in lines if called_name(x) == "stop_at"]:
             lines.remove(line)
@@ -128,6 +132,26 @@ def _add_waits(lines: list[str], notes: list[str], pauses: list[AskedPause], var
             continue
         lines.insert(after_last_step(lines, SKILL_NAMES), step)
         notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
+
+
+def _count_as_asked(lines: list[str], notes: list[str], pause: AskedPause) -> None:
+    """The one ``wait`` of the code given the one pause's count, where it has another number."""
+    waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
+    found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
+    if found is None or len(found[1].args) != 3:
+        return
+    tree, call, _ = found
+    count = call.args[2]
+    if not isinstance(count, ast.Constant) or type(count.value) is not int or count.value == pause.steps:
+        return
+    before = lines[waits[0]].strip()
+    call.args[2] = ast.Constant(pause.steps)
+    after = ast.unparse(tree)
+    lines[waits[0]] = in_place_of(lines[waits[0]], after)
+    notes.append(
+        f"`{before}` -> `{after}`: the words ask a pause of {pause.steps} timesteps "
+        f"({pause.clause.strip()!r})"
+    )
 
 
 def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:

@@ -89,6 +89,7 @@ def test_no_reader_imports_another_reader() -> None:
         "trajadapt.readers.words",
         "trajadapt.readers.direction_words",
         "trajadapt.readers.height_words",
+        "trajadapt.readers.least_distances",
         "trajadapt.readers.end_words",
         "trajadapt.readers.stop_words",
         "trajadapt.readers.part_words",

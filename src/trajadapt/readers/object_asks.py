@@ -64,15 +64,14 @@ from trajadapt.code_parse import (
     step_on_object,
 )
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.least_distances import keep_stated_clearances
 from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, ends_at_the_place, object_asks
 from trajadapt.readers.paces import speed_factor
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
     asks_distance,
-    asks_pace,
     intensity_word,
     is_stated,
-    longest_names,
     names_in,
     stated_numbers,
 )
@@ -122,7 +121,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
                      f"{asked_words(ask)} {ask.name}")  # fmt: skip
         lines[steps[0] : steps[0] + 1] = [in_place_of(lines[steps[0]], line) for line in replaced]
     _unnamed_midpoints(lines, notes, words, names)
-    _stated_clearances(lines, notes, words, names)
+    keep_stated_clearances(lines, notes, words, names)
     return "\n".join(lines), notes
 
 
@@ -287,34 +286,6 @@ def _amounts_stated(call: ast.Call, clause: str) -> bool:
         and is_stated(float(v.value), numbers)
         for v in given
     )
-
-
-def _stated_clearances(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
-    """A ``move_away`` by no number from an object a clause keeps a stated least distance from: ``avoid``.
-
-    "Stay at least 0.2 away from the marmoset" came back as ``move_away(t, marmoset)``, which moves
-    the path a vague amount and may stay closer than 0.2; ``avoid(t, marmoset, 0.2)`` keeps it.
-    """
-    for clause in split_clauses(words, names):
-        named, least = longest_names(names_in(clause, names)), MINIMUM_DISTANCE.search(clause)
-        if len(named) != 1 or least is None or asks_pace(clause):
-            continue
-        steps = [i for i, x in enumerate(lines) if on_object(call_of(x, ("move_away",)), named[0])]
-        if len(steps) != 1 or _amount_is_a_number(call_of(lines[steps[0]], ("move_away",))):
-            continue
-        before = lines[steps[0]].strip()
-        after = f"t = avoid(t, detect_objects({named[0]!r}), {least.group(1)})"
-        lines[steps[0]] = in_place_of(lines[steps[0]], after)
-        notes.append(
-            f"`{before}` -> `{after}`: the instruction keeps at least {least.group(1)} from {named[0]}"
-        )
-
-
-def _amount_is_a_number(call: ast.Call | None) -> bool:
-    """Whether a ``move_away`` step was given its amount as a number (by position or keyword)."""
-    given = [] if call is None else call.args[2:3] + [k.value for k in call.keywords if k.arg == "amount"]
-    plain = [value.operand if isinstance(value, ast.UnaryOp) else value for value in given]  # -0.3 too
-    return any(isinstance(value, ast.Constant) and isinstance(value.value, int | float) for value in plain)
 
 
 def _unnamed_midpoints(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:

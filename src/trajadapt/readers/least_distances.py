@@ -1,0 +1,60 @@
+"""A step on an object that a clause keeps a stated least distance from, made the clearance it states.
+
+"Stay at least 0.2 away from the marmoset" came back as ``move_away(t, marmoset)``, which moves the
+path a vague amount and may stay closer than 0.2; "detour around the table so the robot never gets
+closer than 1.5 m to it" as ``pass_over(t, table, clearance=1.5)``, which a ground robot cannot fly
+and which passes over the table, not 1.5 from it. A clause that names one object, states a least
+distance (``words.MINIMUM_DISTANCE``) and asks no pace makes the one step on that object that does
+not keep it (``move_away`` by no number, ``move_closer`` or ``pass_through`` where the clause asks
+to come no closer nor past, ``pass_over`` where it says nothing of over or above) ``avoid(t, X,
+<the distance>)``. Used by object-asks.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from trajadapt.code_parse import call_of, in_place_of, on_object
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.words import CLOSER, MINIMUM_DISTANCE, asks_pace, asks_visit, longest_names, names_in
+
+OVER = re.compile(r"\b(?:over|above|on\s+top|overhead|across\s+the\s+top)\b", re.I)
+"""Words that ask to pass over an object: there ``pass_over`` keeps its clearance above it."""
+SHORT_OF_A_CLEARANCE = ("move_away", "move_closer", "pass_through", "pass_over")
+
+
+def keep_stated_clearances(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
+    """Each step on an object that falls short of the least distance its clause states: ``avoid`` (above)."""
+    for clause in split_clauses(words, names):
+        named, least = longest_names(names_in(clause, names)), MINIMUM_DISTANCE.search(clause)
+        if len(named) != 1 or least is None or asks_pace(clause):
+            continue
+        steps = [i for i, x in enumerate(lines) if _falls_short(x, named[0], clause)]
+        if len(steps) != 1:
+            continue
+        before = lines[steps[0]].strip()
+        after = f"t = avoid(t, detect_objects({named[0]!r}), {least.group(1)})"
+        lines[steps[0]] = in_place_of(lines[steps[0]], after)
+        notes.append(
+            f"`{before}` -> `{after}`: the instruction keeps at least {least.group(1)} from {named[0]}"
+        )
+
+
+def _falls_short(line: str, name: str, clause: str) -> bool:
+    """Whether ``line`` is a step on object ``name`` that does not keep a least distance from it."""
+    call = call_of(line, SHORT_OF_A_CLEARANCE)
+    if not on_object(call, name) or call is None or not isinstance(call.func, ast.Name):
+        return False
+    if call.func.id == "move_away":
+        return not _amount_is_a_number(call)
+    if call.func.id == "pass_over":
+        return OVER.search(clause) is None
+    return not (asks_visit(clause) or CLOSER.search(clause))  # "come closer, but no closer than 0.2"
+
+
+def _amount_is_a_number(call: ast.Call) -> bool:
+    """Whether a ``move_away`` step was given its amount as a number (by position or keyword)."""
+    given = call.args[2:3] + [k.value for k in call.keywords if k.arg == "amount"]
+    plain = [value.operand if isinstance(value, ast.UnaryOp) else value for value in given]  # -0.3 too
+    return any(isinstance(value, ast.Constant) and isinstance(value.value, int | float) for value in plain)

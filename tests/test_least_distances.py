@@ -1,0 +1,46 @@
+"""A step that falls short of a least distance its clause states becomes that clearance (readers.least_distances).
+
+Phrasings written for the reader; none of the benchmark sets has them.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from trajadapt.readers.least_distances import keep_stated_clearances
+
+NAMES = ["table", "lamp"]
+
+
+def kept(words: str, step: str) -> list[str]:
+    lines, notes = [step], list[str]()
+    keep_stated_clearances(lines, notes, words, NAMES)
+    return lines
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        ("go round the table so you never get closer than 1.5 to the table", "t = pass_over(t, detect_objects('table'), clearance=1.5)"),
+        ("keep no less than 0.4 from the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("don't pass within 0.4 of the lamp", "t = pass_through(t, detect_objects('lamp'))"),
+    ],
+)  # fmt: skip
+def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:
+    name = "table" if "table" in words else "lamp"
+    assert kept(words, step) == [
+        f"t = avoid(t, detect_objects('{name}'), {'1.5' if name == 'table' else '0.4'})"
+    ]
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        ("fly over the table at least 0.5 above it", "t = pass_over(t, detect_objects('table'), clearance=0.5)"),
+        ("come closer to the lamp, but no closer than 0.3", "t = move_closer(t, detect_objects('lamp'))"),
+        ("stay at least 0.3 from the lamp", "t = move_away(t, detect_objects('lamp'), 0.4)"),  # a number given
+        ("slow down at least 30% near the lamp", "t = move_away(t, detect_objects('lamp'))"),  # a pace
+    ],
+)  # fmt: skip
+def test_a_step_the_words_may_ask_stays(words: str, step: str) -> None:
+    assert kept(words, step) == [step]

@@ -169,3 +169,16 @@ def test_an_end_already_at_rest_gets_no_second_stop() -> None:
         SLOWING_TO_REST,
     )
     assert steps == ["t = reach(t, detect_objects('box'))", SLOWING_TO_REST]
+
+
+@pytest.mark.parametrize(
+    ("words", "raised"),
+    [
+        ("land about 0.2 above the lamp", "t = shift_goal(t, 'up', 0.2)"),
+        ("wrap up just above the lamp", "t = shift_goal(t, 'up', 'slightly')"),
+    ],
+)
+def test_an_end_above_an_object_ends_there_then_raises_the_goal(words: str, raised: str) -> None:
+    code = program("t = shift_goal(t, 'up', 0.2)", "t = avoid(t, detect_objects('lamp'), 0.2)")
+    lines = end_at_asked_places(code, [words], NAMES)[0].splitlines()
+    assert lines[1:-1] == ["t = reach(t, detect_objects('lamp'))", raised]

@@ -25,7 +25,9 @@ the next one where it names no object, says a word of stopping: "and be at rest 
 there", "fully stopped there", "not moving at the end") also slows to a stop, ``speed_profile(t,
 'decelerate', start=0.6)`` last, as a stop at the end is read, unless a step already ends at rest
 (``reach`` keeps the speed: "finish right at the quill and come to a complete rest there" arrived at
-full speed). A review note says what changed and why.
+full speed). An end above the object ("finish about 0.1 directly above the bowl", "end just above
+the mug") ends at it and then raises the goal by that height (``shift_goal(t, 'up', 0.1)``, or
+'slightly'), in place of the model's own raise of the goal. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -50,7 +52,7 @@ from trajadapt.code_parse import (
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import STOP_RAMP_START
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
-from trajadapt.readers.words import longest_names, names_in
+from trajadapt.readers.words import NUMBER_TEXT, longest_names, names_in
 from trajadapt.skills import SKILL_NAMES
 
 _NOT_A_NOUN = r"(?<!the\s)(?<!its\s)(?<!your\s)(?<!their\s)(?<!this\s)(?<!that\s)(?<!an\s)"
@@ -66,6 +68,13 @@ _ENDING = (
 )
 AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
 """An ending verb with a word that puts the end on the object: "finish at", "land on"."""
+ABOVE_PLACE = re.compile(
+    _ENDING + rf"(?:(?:about|roughly|around|approximately|some)\s+)?(?P<amount>{NUMBER_TEXT})?\s*"
+    r"(?:(?:directly|right|just|straight|exactly)\s+)?(?:above|over)\b",
+    re.I,
+)
+"""An ending verb with a height over the object: "finish about 0.1 directly above", "end just above"
+(lengths are in metres by now: ``read_against_words`` read "10 cm" as 0.1)."""
 BESIDE_PLACE = re.compile(
     _ENDING + r"(?:beside|next\s+to|near|nearby|by|close\s+to|alongside|adjacent\s+to|against)\b", re.I
 )
@@ -102,6 +111,7 @@ class AskedEnd:
     place: str
     skill: str  # 'reach' (at the object) or 'stop_at' (where the path passes nearest it)
     at_rest: bool = False  # the words leave the robot at rest there
+    above: str = ""  # a height over the object to end at: a number, or 'slightly' ("just above")
 
 
 def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
@@ -114,11 +124,12 @@ def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
     >>> asked_end("slow down at the end near the box", ["box"]) is None
     True
     """
-    for pattern, skill in ((AT_PLACE, "reach"), (BESIDE_PLACE, "stop_at")):
+    for pattern, skill in ((AT_PLACE, "reach"), (ABOVE_PLACE, "reach"), (BESIDE_PLACE, "stop_at")):
         found = pattern.search(clause)
         place = _one_name(clause[found.end() :], names) if found else None
         if place is not None:
-            return AskedEnd(clause, place, skill)
+            above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
+            return AskedEnd(clause, place, skill, above=above)
     named = NAMED_AS_END.search(clause)
     place = _one_name(named.group("named") or named.group("then"), names) if named else None
     if place is None and FINISHING.search(clause):
@@ -152,6 +163,8 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     notes: list[str] = []
     if not any(_ends_there(line, end) for line in lines):
         lines, notes = _ended_there(lines, end, clauses, variable)
+    if end.above:
+        lines, notes = _raised_end(lines, end, variable), [*notes, _raised_note(end, variable)]
     if end.skill == "reach" and _rests_there(end, clauses, names) and not _ends_at_rest(lines):
         step = f"{variable} = speed_profile({variable}, 'decelerate', start={STOP_RAMP_START})"
         at = after_last_step(lines, SKILL_NAMES)
@@ -177,6 +190,27 @@ def _ended_there(
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
     return [*lines[:at], step, *lines[at:]], notes
+
+
+def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> list[str]:
+    """``lines`` with the goal raised by ``end.above`` right after the step that ends at the object.
+
+    Another ``shift_goal`` up is the model's try at the height: the reach after it would undo it.
+    """
+    kept = [line for line in lines if not (called_name(line) == "shift_goal" and "'up'" in line)]
+    at = next(index for index, line in enumerate(kept) if _ends_there(line, end)) + 1
+    return [*kept[:at], in_place_of(kept[at - 1], _raise(end, variable)), *kept[at:]]
+
+
+def _raise(end: AskedEnd, variable: str) -> str:
+    amount = end.above if end.above[:1].isdigit() or end.above[:1] == "." else repr(end.above)
+    return f"{variable} = shift_goal({variable}, 'up', {amount})"
+
+
+def _raised_note(end: AskedEnd, variable: str) -> str:
+    said = end.clause.strip()
+    raised = f"`{_raise(end, variable)}` after the end at the {end.place}"
+    return f"{raised}: the words ask the end above it ({said!r})"
 
 
 def _rests_there(end: AskedEnd, clauses: list[str], names: list[str]) -> bool:

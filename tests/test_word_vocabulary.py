@@ -178,3 +178,17 @@ def test_coming_within_a_distance_passes_close_by(words: str, relation: str | No
 def test_past_where_the_path_ends_is_past_the_goal(words: str) -> None:
     code = "t = get_trajectory()\nt = shift(t, 'left', 0.2)\nmodified_trajectory = t"
     assert read_against_words(code, [words], ["vase"])[0].splitlines()[1] == "t = extend(t, 0.2, 'left')"
+
+
+@pytest.mark.parametrize(
+    ("words", "faster"),
+    [
+        ("drop the middle a bit and speed through that part", True),
+        ("then speed along the corridor", True),
+        ("speeding past the box is fine", True),
+        ("keep a constant speed through the middle", False),
+        ("go at the same speed past the box", False),
+    ],
+)
+def test_speed_as_a_verb_before_a_place_asks_more_speed(words: str, faster: bool) -> None:
+    assert bool(FASTER.search(words)) is faster

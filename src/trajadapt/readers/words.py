@@ -101,9 +101,21 @@ CHANGED_SPEED = (
 speed", "lower the robot's travel speed"; not "lower the path at constant speed")."""
 
 
+_SPEED_VERB = (
+    "".join(
+        f"(?<!{word} )"
+        for word in "a the your its their of at constant steady same top full half low high slow".split()
+    )
+    + "speed"
+)
+"""'speed' as a verb ("speed through that part", "speed past the lamp"), not a noun ("at constant speed
+through the middle", "keep the same speed along the wall")."""
+
+
 FASTER = re.compile(
     r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
     r"|sprint\w*|rush\w*|hustl\w*"
+    rf"|{_SPEED_VERB}(?:s|ing|ed)?\s+(?:through|past|along|across|over|by)\b"
     rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{CHANGED_SPEED}"
     rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN})",
     re.I,
@@ -115,8 +127,8 @@ SLOWER = re.compile(
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",
-"gently" are slower; "zip", "zoom", "rush" faster), and a verb or adjective of more or less before
-a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
+"gently" are slower; "zip", "zoom", "rush", "speed through" faster), and a verb or adjective of more
+or less before a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
 
 GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(

@@ -7,7 +7,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from trajadapt.checks.closing_limits import closing_limits, hold_closing_limits
+from trajadapt.checks.closing_limits import closing_limits, hold_closing_limits, kept_clearances
+from trajadapt.checks.constraints import constraints_for, new_violations
+from trajadapt.checks.projection import project
+from trajadapt.model.case import load_case
 from trajadapt.model.scene import Scene, SceneObject
 from trajadapt.skills import bind_skills
 
@@ -123,3 +126,34 @@ def test_a_limit_that_keeps_the_ends_is_held_between_them():
     assert limit.keep_ends and limit.holds(held) and note is not None
     assert clearance(held, "person") >= 0.6 - 1e-6
     np.testing.assert_allclose(held[[0, -1], 2], 0.0, atol=1e-9)  # its ends stay on the floor
+
+
+def test_a_pace_between_the_limits_does_not_end_the_closing_run() -> None:
+    code = program(
+        "t = avoid(t, detect_objects('person'), 0.6)",
+        "t = scale_speed(t, 0.65, near=detect_objects('box'))",
+        "t = stay_above(t, 0.2)",
+    )
+    assert [limit.skill for limit in closing_limits(code, SCENE)] == ["avoid", "stay_above"]
+    assert kept_clearances(code, SCENE) == (((0.0, 0.0, 0.3), 0.6),)
+
+
+def test_a_limit_before_a_move_is_no_kept_clearance() -> None:
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = shift(t, 'left', 0.2)")
+    assert kept_clearances(code, SCENE) == ()
+
+
+@pytest.mark.parametrize(("name", "clearance"), [("fan", 1.0), ("bed", 0.8)])
+def test_pulling_a_path_back_inside_its_bounds_keeps_the_programs_clearance(
+    ovita_dir, name, clearance
+) -> None:
+    """ground_robot/trajectory_22: ``avoid`` pushed the path past y = -3; the projection undid the clearance."""
+    case = load_case(ovita_dir / "ground_robot" / "trajectory_22.json")
+    original, found = case.trajectory.array, case.scene.find(name)
+    assert found is not None
+    ran = SKILLS["avoid"](original, [list(found.position)], clearance)
+    limits = constraints_for(case.scene)
+    assert new_violations(ran, original, case.scene, limits)  # the avoid leaves the bounds
+    projected = project(ran, original, case.scene, limits, [(found.position, clearance)])
+    nearest = np.linalg.norm(projected.trajectory[:, :3] - np.asarray(found.position), axis=1).min()
+    assert nearest >= clearance - 1e-6 and not projected.remaining

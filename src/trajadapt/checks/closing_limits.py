@@ -5,9 +5,10 @@ of the person, and don't dip below 0.2 m" came back as ``avoid(t, detect_objects
 then ``stay_above(t, 0.2)``, and lifting the path above 0.2 brought it back to 0.247 from the person.
 Each step keeps its own limit only when it runs. The closing run of limit steps (``avoid`` of scene
 objects with a stated clearance, ``stay_above``, ``stay_below``: every step after the program's last
-other step) is applied again in turn, at most ``ROUNDS`` times, until every limit holds; the result is
-kept only if they all hold then, with a note that says which limit a later step had broken and how
-far the waypoints moved. A limit written before another kind of step is that program's own business
+other step; a speed step between them moves no waypoint and does not end the run) is applied again
+in turn, at most ``ROUNDS`` times, until every limit holds; the result is kept only if they all hold
+then, with a note that says which limit a later step had broken and how far the waypoints moved. A
+limit written before another kind of step is that program's own business
 (``avoid`` of a box, then ``reach`` of the box, asks the path to end at the box).
 
 Only literal numbers and ``detect_objects`` of scene objects are read from the code: nothing of it
@@ -22,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from trajadapt.code_parse import detected_name, parse_code
+from trajadapt.code_parse import SPEED_STEPS, detected_name, parse_code
 from trajadapt.model.geometry import Array, progress
 from trajadapt.model.scene import Scene
 from trajadapt.skills import bind_skills
@@ -85,6 +86,8 @@ def closing_limits(code: str, scene: Scene) -> list[Limit]:
     for statement in reversed(steps):
         call = statement.value if isinstance(statement, ast.Assign) else None
         name = call.func.id if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) else ""
+        if name in SPEED_STEPS:
+            continue  # a pace moves no waypoint: "keep 1 m from the fan, and slow down near the bottle"
         if name not in LIMIT_STEPS:
             break
         limit = _limit(name, call, scene)  # type: ignore[arg-type]
@@ -119,6 +122,12 @@ def hold_closing_limits(
                 f"waypoints moved by at most {moved:.4g}"
             )
     return trajectory, None
+
+
+def kept_clearances(code: str, scene: Scene) -> tuple[tuple[tuple[float, float, float], float], ...]:
+    """(point, least distance) for each clearance the program's closing ``avoid`` steps keep."""
+    limits = closing_limits(code, scene)
+    return tuple((point, limit.value) for limit in limits if limit.skill == "avoid" for point in limit.points)
 
 
 def _passes_on(statement: ast.stmt) -> bool:

@@ -11,13 +11,18 @@ to the LLM's trajectory while keeping its shape smooth:
 Clearance and the inner reach are not convex, so the linearised problem is solved again from its
 own answer a few times; what the linearisation leaves is closed by a direct push, which is smoothed
 once more and kept only if the smoothed path breaks nothing new. Speeds are not changed (they are
-clipped to ``max_speed`` if one is set). ``Projection.moves`` says which constraint moved which
-waypoints; the rest of the moved waypoints moved to keep the path smooth.
+clipped to ``max_speed`` if one is set). The clearances the program itself keeps at its close
+(``kept``: ``avoid(t, detect_objects('fan'), 1)``, from ``closing_limits.kept_clearances``) get rows
+of their own, measured from the object's centre as the step measures them: pulling a path back
+inside its bounds must not bring it back beside the object the words keep it from; unlike a
+constraint, one the projection cannot keep is no violation. ``Projection.moves`` says which
+constraint moved which waypoints; the rest of the moved waypoints moved to keep the path smooth.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -39,6 +44,9 @@ from trajadapt.skills.objects import avoid, sideways_from
 SMOOTHING_WEIGHT = 4.0
 ROUNDS = 4
 REACH_MARGIN = 0.9  # waypoints beyond this share of the outer reach (or inside 1/share of the inner) get rows
+KEPT_MARGIN = 1.02  # a kept clearance's rows hold a little more, as ``avoid`` does: the linearisation moves
+Kept = Sequence[tuple[Sequence[float], float]]
+"""Clearances the program keeps: (a point, the least distance from it)."""
 
 
 @dataclass(frozen=True)
@@ -63,7 +71,9 @@ class Projection:
         return f"projected onto the constraints: waypoints moved by at most {self.largest_move:.4g}{tail}"
 
 
-def project(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Projection:
+def project(
+    trajectory: Array, original: Array, scene: Scene, constraints: Constraints, kept: Kept = ()
+) -> Projection:
     """Return the nearest smooth trajectory that satisfies ``constraints``.
 
     A pause (consecutive waypoints at one position) stays a pause: the problem is solved on one
@@ -76,7 +86,7 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     constraints = _holding_kept_ends(trajectory, original, scene, constraints, inherited)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
-    compact = _project_distinct(trajectory[firsts], original, scene, constraints)
+    compact = _project_distinct(trajectory[firsts], original, Problem(scene, constraints, tuple(kept)))
     projected = trajectory.copy()
     projected[:, :3] = compact[runs, :3]
     if constraints.max_speed is not None:
@@ -89,6 +99,26 @@ def project(trajectory: Array, original: Array, scene: Scene, constraints: Const
     broken = new_violations(trajectory, original, scene, constraints)
     moves = constraint_moves(trajectory, projected, broken)
     return Projection(projected, largest, remaining, moves, as_original)
+
+
+@dataclass(frozen=True)
+class Problem:
+    """What a projection keeps: the scene, the constraints and the program's own clearances."""
+
+    scene: Scene
+    constraints: Constraints
+    kept: Kept = ()
+
+    def broken(self, trajectory: Array, original: Array) -> int:
+        """How many constraints and kept clearances ``trajectory`` breaks."""
+        violations = len(find_violations(trajectory, original, self.scene, self.constraints))
+        return violations + sum(
+            _nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept
+        )
+
+
+def _nearest(trajectory: Array, point: Sequence[float]) -> float:
+    return float(np.linalg.norm(trajectory[:, :3] - np.asarray(point, dtype=np.float64), axis=1).min())
 
 
 def _holding_kept_ends(
@@ -161,17 +191,17 @@ def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
     return runs
 
 
-def _project_distinct(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
+def _project_distinct(trajectory: Array, original: Array, problem: Problem) -> Array:
     """The projection of a trajectory without repeated positions (see ``project``)."""
     positions = trajectory[:, :3].copy()
     for _ in range(ROUNDS):
-        positions = _solve(positions, trajectory[:, :3], original, scene, constraints)
+        positions = _solve(positions, trajectory[:, :3], original, problem)
         projected = np.c_[positions, trajectory[:, 3]]
-        if not find_violations(projected, original, scene, constraints):
+        if not problem.broken(projected, original):
             break
-    if find_violations(projected, original, scene, constraints):
-        projected = _finish(projected, trajectory, original, scene, constraints)
-    for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
+    if problem.broken(projected, original):
+        projected = _finish(projected, trajectory, original, problem)
+    for index, keep in ((0, problem.constraints.keep_start), (-1, problem.constraints.keep_goal)):
         if keep:
             projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
     result: Array = projected
@@ -215,20 +245,21 @@ def _constraint_name(violation: Violation) -> str:
     return f"fixed {kind}"
 
 
-def _finish(
-    projected: Array, target: Array, original: Array, scene: Scene, constraints: Constraints
-) -> Array:
+def _finish(projected: Array, target: Array, original: Array, problem: Problem) -> Array:
     """Close what the linearisation left with a direct push; smooth that once more if it stays valid."""
-    pushed = _push_into(projected, original, scene, constraints)
-    smoothed = np.c_[_solve(pushed[:, :3], target[:, :3], original, scene, constraints), pushed[:, 3]]
-    smoothed = _push_into(smoothed, original, scene, constraints)
-    still = len(find_violations(pushed, original, scene, constraints))
-    return smoothed if len(find_violations(smoothed, original, scene, constraints)) <= still else pushed
+    pushed = _push_into(projected, original, problem)
+    smoothed = np.c_[_solve(pushed[:, :3], target[:, :3], original, problem), pushed[:, 3]]
+    smoothed = _push_into(smoothed, original, problem)
+    still = problem.broken(pushed, original)
+    return smoothed if problem.broken(smoothed, original) <= still else pushed
 
 
-def _push_into(trajectory: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
+def _push_into(trajectory: Array, original: Array, problem: Problem) -> Array:
     """Push waypoints out of objects' clearance, into the reach shell and the bounds; keep fixed ends."""
+    scene, constraints = problem.scene, problem.constraints
     fixed = trajectory.copy()
+    for point, distance in problem.kept:
+        fixed = avoid(fixed, [list(point)], distance)
     if constraints.min_clearance is not None:
         for obj in (o for o in scene.objects if constraints.keeps_clear_of(o.name)):
             fixed = avoid(
@@ -247,7 +278,7 @@ def _push_into(trajectory: Array, original: Array, scene: Scene, constraints: Co
     return fixed
 
 
-def _solve(around: Array, target: Array, original: Array, scene: Scene, constraints: Constraints) -> Array:
+def _solve(around: Array, target: Array, original: Array, problem: Problem) -> Array:
     try:
         import osqp
         from scipy import sparse
@@ -261,7 +292,7 @@ def _solve(around: Array, target: Array, original: Array, scene: Scene, constrai
     smoothing = sparse.kron(second.T @ second, sparse.eye(3))
     cost = sparse.csc_matrix(sparse.eye(size) + SMOOTHING_WEIGHT * smoothing)
     linear = -target.reshape(-1)
-    rows, low, high = _constraint_rows(around, original, scene, constraints)
+    rows, low, high = _constraint_rows(around, original, problem)
     solver = osqp.OSQP()
     solver.setup(P=sparse.triu(cost, format="csc"), q=linear, A=rows, l=low, u=high,
                  verbose=False, eps_abs=1e-9, eps_rel=1e-9, max_iter=20000, polishing=True)  # fmt: skip
@@ -271,10 +302,10 @@ def _solve(around: Array, target: Array, original: Array, scene: Scene, constrai
     return np.asarray(solution.x, dtype=np.float64).reshape(count, 3)
 
 
-def _constraint_rows(
-    around: Array, original: Array, scene: Scene, constraints: Constraints
-) -> tuple[Any, np.ndarray, np.ndarray]:
+def _constraint_rows(around: Array, original: Array, problem: Problem) -> tuple[Any, np.ndarray, np.ndarray]:
     from scipy import sparse
+
+    constraints = problem.constraints
 
     count = len(around)
     rows: list[Any] = [sparse.eye(3 * count, format="csr")]
@@ -286,7 +317,7 @@ def _constraint_rows(
             lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = original[fixed, :3]
     low.append(lower)
     high.append(upper)
-    for row, bound in _clearance_rows(around, scene, constraints):
+    for row, bound in _clearance_rows(around, problem.scene, constraints) + _kept_rows(around, problem.kept):
         rows.append(sparse.csr_matrix(row[None, :]))
         low.append(np.array([bound]))
         high.append(np.array([1e9]))
@@ -298,34 +329,47 @@ def _constraint_rows(
 
 
 def _clearance_rows(around: Array, scene: Scene, constraints: Constraints) -> list[tuple[np.ndarray, float]]:
-    """Half-space rows keeping waypoints that pass beside an object at least the clearance sideways.
-
-    A waypoint whose offset along its heading is ``a`` must be ``sqrt(d^2 - a^2)`` off to the side
-    (one shared side per object, across the direction of travel). Waypoints ahead of or behind the
-    object by more than d are clear anyway; constraining them radially would bunch the path up.
-    """
+    """Half-space rows keeping waypoints that pass beside an object at least the clearance sideways."""
     if constraints.min_clearance is None:
         return []
-    track = np.c_[around, np.zeros(len(around))]
-    heading = np.gradient(around, axis=0)
-    heading /= np.maximum(np.linalg.norm(heading, axis=1, keepdims=True), 1e-12)
     rows = []
     for obj in scene.objects:
-        if not constraints.keeps_clear_of(obj.name):
-            continue
-        # a margin: the linearisation moves with the path; the sphere holds the object's box
-        clearance = (constraints.min_clearance + enclosing_radius(obj)) * 1.05
-        centre = np.asarray(obj.position)
-        offsets = around - centre
-        along = np.sum(offsets * heading, axis=1)
-        beside = (np.abs(along) < clearance) & (np.linalg.norm(offsets, axis=1) < 1.5 * clearance)
-        if not beside.any():
-            continue
-        side = sideways_from(track, offsets, beside)
-        for index in np.flatnonzero(beside):
-            row = np.zeros(3 * len(around))
-            row[3 * index : 3 * index + 3] = side[index]
-            rows.append((row, float(side[index] @ centre + np.sqrt(clearance**2 - along[index] ** 2))))
+        if constraints.keeps_clear_of(obj.name):
+            # a margin: the linearisation moves with the path; the sphere holds the object's box
+            clearance = (constraints.min_clearance + enclosing_radius(obj)) * 1.05
+            rows += _beside_rows(around, np.asarray(obj.position), clearance)
+    return rows
+
+
+def _kept_rows(around: Array, kept: Kept) -> list[tuple[np.ndarray, float]]:
+    """Rows for the clearances the program keeps, from each point itself (``avoid`` measures so)."""
+    return [
+        row
+        for point, distance in kept
+        for row in _beside_rows(around, np.asarray(point), distance * KEPT_MARGIN)
+    ]
+
+
+def _beside_rows(around: Array, centre: Array, clearance: float) -> list[tuple[np.ndarray, float]]:
+    """Half-space rows keeping waypoints that pass beside ``centre`` at least ``clearance`` sideways.
+
+    A waypoint whose offset along its heading is ``a`` must be ``sqrt(d^2 - a^2)`` off to the side
+    (one shared side per point, across the direction of travel). Waypoints ahead of or behind the
+    point by more than d are clear anyway; constraining them radially would bunch the path up.
+    """
+    heading = np.gradient(around, axis=0)
+    heading /= np.maximum(np.linalg.norm(heading, axis=1, keepdims=True), 1e-12)
+    offsets = around - centre
+    along = np.sum(offsets * heading, axis=1)
+    beside = (np.abs(along) < clearance) & (np.linalg.norm(offsets, axis=1) < 1.5 * clearance)
+    if not beside.any():
+        return []
+    side = sideways_from(np.c_[around, np.zeros(len(around))], offsets, beside)
+    rows = []
+    for index in np.flatnonzero(beside):
+        row = np.zeros(3 * len(around))
+        row[3 * index : 3 * index + 3] = side[index]
+        rows.append((row, float(side[index] @ centre + np.sqrt(clearance**2 - along[index] ** 2))))
     return rows
 
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
-from trajadapt.checks.closing_limits import hold_closing_limits
+from trajadapt.checks.closing_limits import hold_closing_limits, kept_clearances
 from trajadapt.checks.constraints import ConstraintMove, constraints_for, new_violations
-from trajadapt.checks.projection import project
+from trajadapt.checks.projection import Kept, project
 from trajadapt.checks.review import validate_result
 from trajadapt.checks.robot_limits import robot_constraints
 from trajadapt.errors import CodeRejected, DependencyNotInstalled, InvalidTrajectory
@@ -78,24 +78,28 @@ def execute(
         trajectory = validate_result(result.rows)
     except InvalidTrajectory as exc:
         return replace(ran, outcome=Failure.of("InvalidTrajectory", str(exc)))
+    kept = kept_clearances(code, case.scene) if skills else ()
     if skills:
         held, note = hold_closing_limits(code, trajectory.array, case.scene)
         if note is not None:
             trajectory, ran = validate_result(held), replace(ran, notes=(*ran.notes, note))
-    return held_to_constraints(ran, trajectory, case, settings, " ".join(asked))
+    return held_to_constraints(ran, trajectory, case, settings, " ".join(asked), kept)
 
 
 def held_to_constraints(
-    ran: Execution, trajectory: Trajectory, case: Case, settings: SessionSettings, asked: str
+    ran: Execution, trajectory: Trajectory, case: Case, settings: SessionSettings, asked: str, kept: Kept = ()
 ) -> Execution:
-    """The run with ``trajectory`` if it keeps the constraints (projected if asked), or why not."""
+    """The run with ``trajectory`` if it keeps the constraints (projected if asked), or why not.
+
+    ``kept``: the clearances the program keeps at its close, which a projection keeps too.
+    """
     limits = constraints_for(case.scene, settings.constraints, robot_constraints(settings.robot), asked)
     original = case.trajectory.array
     violations = new_violations(trajectory.array, original, case.scene, limits)
     if violations and settings.project:
         broken = "; ".join(v.message for v in violations)
         try:
-            projection = project(trajectory.array, original, case.scene, limits)
+            projection = project(trajectory.array, original, case.scene, limits, kept)
         except DependencyNotInstalled as exc:
             return replace(ran, outcome=Failure.of("ConstraintViolation", f"{broken} ({exc})"))
         note = f"{projection.describe()} (the code's result broke: {broken})"

@@ -163,6 +163,8 @@ def test_a_number_of_the_speed_or_a_kept_end_names_no_part_for_the_pace(words: s
         ("slow it down by roughly 30%", "t[0]", "t = scale_speed(t, 1.4)"),  # no end named: everywhere
     ],
 )
-def test_a_pace_placed_at_an_end_waypoint_is_the_part_the_words_name(words: str, near: str, step: str) -> None:
+def test_a_pace_placed_at_an_end_waypoint_is_the_part_the_words_name(
+    words: str, near: str, step: str
+) -> None:
     code = CODE.format(step=f"t = scale_speed(t, 1.4, near={near})")
     assert localize_speed(code, [words], NAMES)[0].splitlines()[1] == step

@@ -192,3 +192,22 @@ def test_past_where_the_path_ends_is_past_the_goal(words: str) -> None:
 )
 def test_speed_as_a_verb_before_a_place_asks_more_speed(words: str, faster: bool) -> None:
     assert bool(FASTER.search(words)) is faster
+
+
+@pytest.mark.parametrize(
+    ("words", "faster", "slower"),
+    [
+        ("go past the lamp at roughly half your current speed", False, True),
+        ("cover the last part at a third of the pace", False, True),
+        ("drive the first half at twice the speed", True, False),
+        ("keep half the distance from the lamp", False, False),
+    ],
+)
+def test_a_factor_before_a_speed_names_its_direction(words: str, faster: bool, slower: bool) -> None:
+    assert (bool(FASTER.search(words)), bool(SLOWER.search(words))) == (faster, slower)
+
+
+def test_a_pace_said_as_a_factor_is_that_factor_wherever_it_is_read() -> None:
+    code = "t = get_trajectory()\nt = shift(t, 'left')\nmodified_trajectory = t"
+    read, _ = read_against_words(code, ["near the lamp, move at half speed"], ["lamp"])
+    assert "t = scale_speed(t, 0.5, near=detect_objects('lamp'))" in read.splitlines()

@@ -66,7 +66,7 @@ from trajadapt.code_parse import (
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.least_distances import keep_stated_clearances
 from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, ends_at_the_place, object_asks
-from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.paces import asked_factor
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
     asks_distance,
@@ -158,7 +158,7 @@ def _placed_near(line: str, pace: ObjectAsk) -> str:
     faster = pace.relation == "faster"
     if skill == "scale_speed" and isinstance(factor, ast.Constant) and isinstance(factor.value, int | float):
         if (float(factor.value) > 1.0) != faster:
-            call.args[1] = ast.Constant(speed_factor(pace.clause, faster=faster))
+            call.args[1] = ast.Constant(asked_factor(pace.clause, faster))
     return f"t = {ast.unparse(call)}"
 
 
@@ -327,7 +327,7 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     _, call, skill = assigned_call(line)  # type: ignore[misc]
     point = f"detect_objects({ask.name!r})"
     if ask.relation in ("faster", "slower"):
-        factor = speed_factor(ask.clause, faster=ask.relation == "faster")
+        factor = asked_factor(ask.clause, ask.relation == "faster")
         radius = f", radius={ask.radius}" if ask.radius is not None else ""
         speed = f"t = scale_speed(t, {factor}, near={point}{radius})"
         rest = _without_object(call, ask.name) if skill == "avoid" else None

@@ -44,7 +44,7 @@ from trajadapt.code_parse import (
 )
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import asked_words, object_asks
-from trajadapt.readers.paces import speed_factor
+from trajadapt.readers.paces import asked_factor
 from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, intensity_word, part_named
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
@@ -107,7 +107,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     paces = [ask for ask in asks if ask.relation in ("faster", "slower")]
     if len(paces) == 1:
         ask = paces[0]
-        factor = speed_factor(ask.clause, faster=ask.relation == "faster")
+        factor = asked_factor(ask.clause, ask.relation == "faster")
         step = f"t = scale_speed(t, {factor}, near=detect_objects({ask.name!r}))"
         return step, f"it asks for a {ask.relation} pace near {ask.name}"
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
@@ -115,7 +115,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
         return None, ""
     part = _shift_part(lines[index]) or part_named(words)
     where = f", part={part!r}" if part else ""
-    step = f"t = scale_speed(t, {speed_factor(words, faster=faster)}{where})"
+    step = f"t = scale_speed(t, {asked_factor(words, faster):g}{where})"
     return step, f"it asks for a {'faster' if faster else 'slower'} pace"
 
 

@@ -112,23 +112,31 @@ _SPEED_VERB = (
 through the middle", "keep the same speed along the wall")."""
 
 
+_SPEED_OF = (
+    r"(?:the\s+|your\s+|its\s+|their\s+)?(?:(?:current|present|usual|normal|original|old)\s+)?(?:speed|pace)\b"
+)
+"""A speed after a factor that names its direction: "half your current speed", "twice the pace"."""
+
+
 FASTER = re.compile(
     r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
     r"|sprint\w*|rush\w*|hustl\w*"
     rf"|{_SPEED_VERB}(?:s|ing|ed)?\s+(?:through|past|along|across|over|by)\b"
     rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{CHANGED_SPEED}"
-    rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN})",
+    rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN}|(?:twice|double|triple)\s+{_SPEED_OF})",
     re.I,
 )
 SLOWER = re.compile(
     r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*|creep\w*|crept|tiptoe\w*|dawdl\w*|gentl\w*"
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
-    rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED})",
+    rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
+    rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF})",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",
-"gently" are slower; "zip", "zoom", "rush", "speed through" faster), and a verb or adjective of more
-or less before a speed ("reduce your speed", "raise the pace", "at a lower speed")."""
+"gently" are slower; "zip", "zoom", "rush", "speed through" faster), a verb or adjective of more
+or less before a speed ("reduce your speed", "raise the pace", "at a lower speed"), and a factor
+that names its direction ("at half your current speed", "at twice the pace")."""
 
 GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(

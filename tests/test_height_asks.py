@@ -45,12 +45,24 @@ def test_a_height_step_with_the_asked_number_and_another_relation_is_replaced() 
 
 
 @pytest.mark.parametrize(
+    ("step", "words", "replaced"),
+    [
+        ("t = set_height(t, 0.4, keep_goal=False)", "stay below 0.4", "t = stay_below(t, 0.4)"),
+        ("t = set_height(t, -0.2, keep_start=True, keep_goal=True)", "keep it above z = -0.2", "t = stay_above(t, -0.2)"),
+    ],
+)  # fmt: skip
+def test_a_height_step_with_options_or_below_zero_takes_the_asked_relation(
+    step: str, words: str, replaced: str
+) -> None:
+    assert replaced in relate_heights(CODE.format(step=step), [words])[0].splitlines()
+
+
+@pytest.mark.parametrize(
     ("step", "words"),
     [
         ("t = stay_below(t, 0.4)", "stay below 0.4"),  # already right
         ("t = stay_below(t, 0.3)", "cruise at a height of 0.4"),  # another number
         ("t = stay_below(t, 0.4)", "fly at 0.4 and never under 0.2"),  # two heights
-        ("t = set_height(t, 0.4, keep_goal=False)", "stay below 0.4"),  # more than a height
     ],
 )
 def test_right_relations_other_numbers_and_two_heights_stay(step: str, words: str) -> None:

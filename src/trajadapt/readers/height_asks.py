@@ -68,7 +68,7 @@ def relate_heights(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         return code, []
     skill, height, clause, held = heights[0]
     lines = code.splitlines()
-    step = _one_height_step(lines, height, options=False)
+    step = _one_height_step(lines, height, options=True)
     if step is None and not any(_height_step(x, options=True) for x in lines):
         step = _clearance_from_a_made_up_point(lines, height)
         if step is None:
@@ -172,6 +172,10 @@ def _height_step(line: str, options: bool = False) -> tuple[str, float | None] |
         return None
     if found[1].keywords and not options:
         return None
-    height = found[1].args[1]
+    height, sign = found[1].args[1], 1.0
+    if isinstance(height, ast.UnaryOp) and isinstance(height.op, ast.USub):  # a height below 0: -0.2
+        height, sign = height.operand, -1.0
     value = height.value if isinstance(height, ast.Constant) else None
-    return found[2], float(value) if isinstance(value, int | float) and not isinstance(value, bool) else None
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        return found[2], sign * float(value)
+    return found[2], None

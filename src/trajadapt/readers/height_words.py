@@ -12,7 +12,7 @@ from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 
-NUMBER = rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|per\s*cent|percent|times\b|x\b))"
+NUMBER = rf"((?<![\w.-])-?(?:{NUMBER_TEXT}))(?![\d.])(?!\s*(?:%|per\s*cent|percent|times\b|x\b))"
 """A height's number: not a share or a factor ("slow down by at least 30 percent" gives no height)."""
 LEVEL = r"(?:height|altitude|elevation)"
 BELOW = (

@@ -126,3 +126,16 @@ def test_an_end_is_put_back_before_a_closing_limit_that_keeps_the_ends() -> None
         "t = reach(t, detect_objects('goal'))",
         "t = stay_below(t, 0, keep_ends=True)",
     ]
+
+
+@pytest.mark.parametrize(
+    ("words", "ends"),
+    [
+        ("lower the middle a little, ending at the same spot", {"goal"}),
+        ("swing wide of the lamp but finish where it finishes now", {"goal"}),
+        ("start from the same point and go left", {"start"}),
+        ("stop at the same height as the box", set()),
+    ],
+)
+def test_an_end_at_the_same_spot_is_kept(words: str, ends: set[str]) -> None:
+    assert kept_ends([words]) == ends

@@ -226,3 +226,11 @@ def test_stopping_where_the_path_passes_an_object_said_as_its_end_is_a_new_goal(
 def test_a_stop_at_an_object_with_no_new_goal_stays() -> None:
     code = CODE.format(step="t = stop_at(t, detect_objects('lamp'))")
     assert scope_to_parts(code, ["stop when you get near the lamp"]) == (code, [])
+
+
+def test_a_whole_path_shift_beside_the_part_move_it_repeats_leaves() -> None:
+    code = "t = get_trajectory()\nt = shift_part(t, 'up', 0.1, 'end')\nt = shift(t, 'up', 0.1)\nmodified_trajectory = t"
+    read, notes = scope_to_parts(code, ["raise the end of the path 0.1, keeping the start where it is"])
+    assert "t = shift(t, 'up', 0.1)" not in read.splitlines() and notes
+    both = scope_to_parts(code, ["move everything up 0.1 and the end up another 0.1"])[0]
+    assert both == code  # a clause with no part says up too

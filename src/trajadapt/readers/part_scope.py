@@ -89,6 +89,7 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         _reach_the_new_goal(lines, notes, words)
     _object_moves_of_first_waypoints(lines, notes, words)
     _moves_of_no_part(lines, notes, words)
+    _whole_shifts_beside_part_moves(lines, notes, words)
     _stops_at_the_goal(lines, notes)
     for move in part_moves(words):
         if move.part == "past the goal" and any(_goes_on(line) for line in lines):
@@ -104,6 +105,23 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         against = f", and {move.part} against the rest's shift" if len(replaced) > 1 else ""
         notes.append(f"`{before}` -> `{'; '.join(replaced)}`: {why}{against}")
     return "\n".join(lines), notes
+
+
+def _whole_shifts_beside_part_moves(lines: list[str], notes: list[str], words: str) -> None:
+    """A whole-path shift the way a part of the path is moved, where only clauses naming a part say it: out.
+
+    "Dip the middle 0.1 lower, ending at the same spot" came back as ``shift_part(t, 'down', 0.1,
+    'middle')`` and ``shift(t, 'down', 0.1)``: the one clause read twice, the middle moved twice.
+    """
+    unplaced = " ".join(c for c in split_clauses(words) if not PART_OR_END.search(c))
+    moved = {direction_argument(call) for _, call in _calls(lines, ("shift_part",))}
+    for index, call in reversed(_calls(lines, ("shift",))):
+        direction = direction_argument(call)
+        if direction in moved and direction not in said_directions(unplaced):
+            notes.append(
+                f"left out `{lines[index].strip()}`: the words move only a part of the path {direction}"
+            )
+            del lines[index]
 
 
 def _add_going_on(move: PartMove, lines: list[str], notes: list[str]) -> None:

@@ -112,3 +112,16 @@ def test_a_number_the_words_may_give_to_this_step_stays(words, step):
 )
 def test_a_length_in_a_metric_unit_is_read_in_metres(words: str, amounts: dict[str, float]) -> None:
     assert direction_amounts(words) == pytest.approx(amounts)
+
+
+@pytest.mark.parametrize(
+    ("words", "step", "given"),
+    [
+        ("lift the middle 0.3 and finish 0.1 higher", "t = shift_goal(t, 'up')", "t = shift_goal(t, 'up', 0.1)"),
+        ("go left by 0.5, then start 0.2 further left", "t = shift_start(t, 'left', 'a bit')",
+         "t = shift_start(t, 'left', 0.2)"),
+    ],
+)  # fmt: skip
+def test_an_end_moves_own_amount_where_two_clauses_give_its_direction_two(words: str, step: str, given: str) -> None:
+    code = CODE.format(step=step)
+    assert given in use_stated_amounts(code, [words])[0].splitlines()

@@ -34,6 +34,7 @@ from trajadapt.code_parse import assigned_call, called_name, in_place_of, skill_
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.part_words import ENDS_MOVED
 from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, part_named
 from trajadapt.skills import SKILL_NAMES
 
@@ -192,16 +193,6 @@ def _directions(line: str) -> set[str]:
     }
 
 
-ENDS_MOVED = {
-    "shift_goal": re.compile(
-        rf"{GOAL.pattern}|\b(?:end(?:s|ed|ing)?|finish\w*)\b"
-        r"(?!\s+(?:of|part|section|segment|portion|stretch|half)\b)",
-        re.I,
-    ),
-    "shift_start": re.compile(rf"{START.pattern}|\b(?:start|begin)(?:s|ed|ing)?\b", re.I),
-}
-"""Words that place a move at one end: the goal ("the goal", "end 0.2 higher", "finish further right";
-"the end of the path" is a part) or the start ("the start point", "start 0.1 further left")."""
 END_NAMES = {"shift_goal": "goal", "shift_start": "start"}
 ONCE_THERE = re.compile(
     r"\b(?:reach\w*|arriv\w*|got|get(?:s|ting)?\s+(?:to|there)|once|after|when\w*|until|before|past|beyond)\b",

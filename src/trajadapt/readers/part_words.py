@@ -125,3 +125,15 @@ def first_count(clause: str) -> int:
     """The N of "the first N waypoints" in the clause, 0 when it names none."""
     found = FIRST_COUNT.search(clause)
     return 0 if found is None else whole_count(found.group(1))
+
+
+ENDS_MOVED = {
+    "shift_goal": re.compile(
+        rf"{GOAL.pattern}|\b(?:end(?:s|ed|ing)?|finish\w*)\b"
+        r"(?!\s+(?:of|part|section|segment|portion|stretch|half)\b)",
+        re.I,
+    ),
+    "shift_start": re.compile(rf"{START.pattern}|\b(?:start|begin)(?:s|ed|ing)?\b", re.I),
+}
+"""Words that place a move at one end: the goal ("the goal", "end 0.2 higher", "finish further right";
+"the end of the path" is a part) or the start ("the start point", "start 0.1 further left")."""

@@ -11,8 +11,9 @@ or two numbers is left alone. A number the words give only to another direction 
 through the middle, and after the goal continue 0.1 further back" answered with ``shift(t, 'up',
 0.1)``) is borrowed: the step gets the amount word of its own direction's clause, or the default (a
 step in a direction the words never say is left to the readers of directions: "back up by 1.5"
-answered ``shift(t, 'up', 1.5)`` is the step for "back").
-A review note says so.
+answered ``shift(t, 'up', 1.5)`` is the step for "back"). Where two clauses give one direction two
+amounts, a clause that moves one end (``part_words.ENDS_MOVED``: "end 0.2 higher than now") gives
+its amount to that end's one vague step (``shift_goal``). A review note says so.
 """
 
 from __future__ import annotations
@@ -20,10 +21,11 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, direction_argument, in_place_of
+from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument, in_place_of
 from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.part_words import ENDS_MOVED
 from trajadapt.readers.words import intensity_word, stated_numbers
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
@@ -37,20 +39,42 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
     lines = code.splitlines()
     for direction, amount in amounts.items():
         vague = [i for i, line in enumerate(lines) if _vague_step(line) == direction]
-        if len(vague) != 1:
-            continue
-        line = lines[vague[0]]
-        tree, call, _ = assigned_call(line)  # type: ignore[misc]
-        if len(call.args) > 2:
-            call.args[2] = ast.Constant(amount)
-        else:
-            call.args.append(ast.Constant(amount))
-        changed = ast.unparse(tree)
-        notes.append(
-            f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
-        )
-        lines[vague[0]] = in_place_of(line, changed)
+        if len(vague) == 1:
+            notes.append(_given(lines, vague[0], direction, amount))
+    notes += _end_amounts(lines, words, set(amounts))
     return "\n".join(lines), notes
+
+
+def _end_amounts(lines: list[str], words: str, read: set[str]) -> list[str]:
+    """Each end move's own amount, where two clauses give one direction two amounts (see the module).
+
+    "Stay 0.3 above the floor through the middle, and end 0.2 higher than now": up has two numbers,
+    but the clause that moves the goal gives its one ``shift_goal`` up 0.2.
+    """
+    notes: list[str] = []
+    for clause in split_clauses(words):
+        given = direction_amounts(clause)
+        ends = [skill for skill, named in ENDS_MOVED.items() if named.search(clause)]
+        if len(given) != 1 or len(ends) != 1 or set(given) <= read:
+            continue
+        ((direction, amount),) = given.items()
+        vague = [i for i, x in enumerate(lines) if _vague_step(x) == direction and called_name(x) == ends[0]]
+        if len(vague) == 1:
+            notes.append(_given(lines, vague[0], direction, amount))
+    return notes
+
+
+def _given(lines: list[str], index: int, direction: str, amount: float) -> str:
+    """``lines[index]``, a vague directional step, given ``amount``; the note saying so."""
+    line = lines[index]
+    tree, call, _ = assigned_call(line)  # type: ignore[misc]
+    if len(call.args) > 2:
+        call.args[2] = ast.Constant(amount)
+    else:
+        call.args.append(ast.Constant(amount))
+    changed = ast.unparse(tree)
+    lines[index] = in_place_of(line, changed)
+    return f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
 
 
 def _vague_step(line: str) -> str | None:

@@ -113,7 +113,8 @@ through the middle", "keep the same speed along the wall")."""
 
 
 _SPEED_OF = (
-    r"(?:the\s+|your\s+|its\s+|their\s+)?(?:(?:current|present|usual|normal|original|old)\s+)?(?:speed|pace)\b"
+    r"(?:the\s+|your\s+|its\s+|their\s+)?"
+    r"(?:(?:current|present|usual|normal|original|old)\s+)?(?:speed|pace)\b"
 )
 """A speed after a factor that names its direction: "half your current speed", "twice the pace"."""
 

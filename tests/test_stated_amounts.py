@@ -122,6 +122,8 @@ def test_a_length_in_a_metric_unit_is_read_in_metres(words: str, amounts: dict[s
          "t = shift_start(t, 'left', 0.2)"),
     ],
 )  # fmt: skip
-def test_an_end_moves_own_amount_where_two_clauses_give_its_direction_two(words: str, step: str, given: str) -> None:
+def test_an_end_moves_own_amount_where_two_clauses_give_its_direction_two(
+    words: str, step: str, given: str
+) -> None:
     code = CODE.format(step=step)
     assert given in use_stated_amounts(code, [words])[0].splitlines()

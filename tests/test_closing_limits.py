@@ -157,3 +157,16 @@ def test_pulling_a_path_back_inside_its_bounds_keeps_the_programs_clearance(
     projected = project(ran, original, case.scene, limits, [(found.position, clearance)])
     nearest = np.linalg.norm(projected.trajectory[:, :3] - np.asarray(found.position), axis=1).min()
     assert nearest >= clearance - 1e-6 and not projected.remaining
+
+
+def test_a_clearance_the_bounds_leave_no_room_for_does_not_pull_the_path_across_the_scene(ovita_dir) -> None:
+    """ground_robot/trajectory_12: the bottle is 0.5 from the wall y = -3; 0.8 from it cannot be kept there."""
+    case = load_case(ovita_dir / "ground_robot" / "trajectory_12.json")
+    original, bottle = case.trajectory.array, case.scene.find("bottle")
+    assert bottle is not None
+    ran = SKILLS["avoid"](SKILLS["shift_goal"](original, "left", 1.0), [list(bottle.position)], 0.8)
+    limits = constraints_for(case.scene)
+    projected = project(ran, original, case.scene, limits, [(bottle.position, 0.8)])
+    steps = np.linalg.norm(np.diff(projected.trajectory[:, :3], axis=0), axis=1)
+    assert not projected.remaining
+    assert steps.max() <= 2 * np.linalg.norm(np.diff(original[:, :3], axis=0), axis=1).max()

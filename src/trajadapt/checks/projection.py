@@ -36,6 +36,7 @@ from trajadapt.checks.constraints import (
     find_violations,
     new_violations,
 )
+from trajadapt.checks.projection_moves import constraint_moves
 from trajadapt.errors import DependencyNotInstalled
 from trajadapt.model.geometry import Array
 from trajadapt.model.scene import Scene
@@ -86,7 +87,7 @@ def project(
     constraints = _holding_kept_ends(trajectory, original, scene, constraints, inherited)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
-    compact = _project_distinct(trajectory[firsts], original, Problem(scene, constraints, tuple(kept)))
+    compact = _keeping_what_it_can(trajectory[firsts], original, Problem(scene, constraints, tuple(kept)))
     projected = trajectory.copy()
     projected[:, :3] = compact[runs, :3]
     if constraints.max_speed is not None:
@@ -191,6 +192,24 @@ def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
     return runs
 
 
+def _keeping_what_it_can(trajectory: Array, original: Array, problem: Problem) -> Array:
+    """The projection that keeps the program's clearances too, where it breaks nothing and stays as smooth.
+
+    Else the projection onto the constraints alone: a clearance the bounds leave no room for (an
+    object 0.5 from a wall, kept 0.8 from) must not pull the path across the scene.
+    """
+    plain = _project_distinct(trajectory, original, replace(problem, kept=()))
+    if not problem.kept or not problem.broken(plain, original):
+        return plain
+    keeping = _project_distinct(trajectory, original, problem)
+    smooth_enough = _longest_step(keeping) <= 1.5 * max(_longest_step(trajectory), _longest_step(plain))
+    return keeping if smooth_enough and not problem.broken(keeping, original) else plain
+
+
+def _longest_step(trajectory: Array) -> float:
+    return float(np.linalg.norm(np.diff(trajectory[:, :3], axis=0), axis=1).max(initial=0.0))
+
+
 def _project_distinct(trajectory: Array, original: Array, problem: Problem) -> Array:
     """The projection of a trajectory without repeated positions (see ``project``)."""
     positions = trajectory[:, :3].copy()
@@ -206,43 +225,6 @@ def _project_distinct(trajectory: Array, original: Array, problem: Problem) -> A
             projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
     result: Array = projected
     return result
-
-
-def constraint_moves(before: Array, after: Array, broken: list[Violation]) -> tuple[ConstraintMove, ...]:
-    """Which constraint moved which waypoints, and how far; the other moved ones kept the path smooth."""
-    moved = np.linalg.norm(after[:, :3] - before[:, :3], axis=1)
-    slowed = before[:, 3] - after[:, 3]
-    tolerance = 1e-6 * max(float(np.ptp(before[:, :3], axis=0).max()), 1.0)
-    moves, attributed = [], set()
-    for violation in broken:
-        indices = tuple(i for i in violation.waypoints if i < len(after))
-        if not indices:
-            continue
-        change = slowed if violation.key == "speed" else moved
-        name = "speed limit" if violation.key == "speed" else _constraint_name(violation)
-        moves.append(ConstraintMove(name, indices, float(change[list(indices)].max())))
-        attributed |= set(indices) if violation.key != "speed" else set()
-    others = tuple(int(i) for i in np.flatnonzero(moved > tolerance) if int(i) not in attributed)
-    if others:
-        moves.append(
-            ConstraintMove(
-                "smoothness (neighbours of moved waypoints)", others, float(moved[list(others)].max())
-            )
-        )
-    return tuple(moves)
-
-
-def _constraint_name(violation: Violation) -> str:
-    """'bounds:x:above' -> 'x upper bound'; 'clearance:box' -> 'clearance from box'; others as keyed."""
-    kind, _, rest = violation.key.partition(":")
-    if kind == "bounds":
-        axis, _, side = rest.partition(":")
-        return f"{axis} {'upper' if side == 'above' else 'lower'} bound"
-    if kind == "clearance":
-        return f"clearance from {rest}"
-    if kind == "reach":
-        return f"arm reach ({'outer' if rest == 'far' else 'inner'})"
-    return f"fixed {kind}"
 
 
 def _finish(projected: Array, target: Array, original: Array, problem: Problem) -> Array:

@@ -182,3 +182,8 @@ def test_an_end_above_an_object_ends_there_then_raises_the_goal(words: str, rais
     code = program("t = shift_goal(t, 'up', 0.2)", "t = avoid(t, detect_objects('lamp'), 0.2)")
     lines = end_at_asked_places(code, [words], NAMES)[0].splitlines()
     assert lines[1:-1] == ["t = reach(t, detect_objects('lamp'))", raised]
+
+
+def test_an_end_already_raised_after_its_reach_stays() -> None:
+    code = program("t = reach(t, detect_objects('lamp'))", "t = shift_goal(t, 'up', 0.2)")
+    assert end_at_asked_places(code, ["finish 0.2 above the lamp"], NAMES) == (code, [])

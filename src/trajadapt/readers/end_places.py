@@ -163,8 +163,9 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     notes: list[str] = []
     if not any(_ends_there(line, end) for line in lines):
         lines, notes = _ended_there(lines, end, clauses, variable)
-    if end.above:
-        lines, notes = _raised_end(lines, end, variable), [*notes, _raised_note(end, variable)]
+    raised = _raised_end(lines, end, variable) if end.above else lines
+    if raised != lines:
+        lines, notes = raised, [*notes, _raised_note(end, variable)]
     if end.skill == "reach" and _rests_there(end, clauses, names) and not _ends_at_rest(lines):
         step = f"{variable} = speed_profile({variable}, 'decelerate', start={STOP_RAMP_START})"
         at = after_last_step(lines, SKILL_NAMES)
@@ -198,7 +199,10 @@ def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> list[str]:
     Another ``shift_goal`` up is the model's try at the height: the reach after it would undo it.
     """
     kept = [line for line in lines if not (called_name(line) == "shift_goal" and "'up'" in line)]
-    at = next(index for index, line in enumerate(kept) if _ends_there(line, end)) + 1
+    ending = [index for index, line in enumerate(kept) if _ends_there(line, end)]
+    if not ending:
+        return lines
+    at = ending[-1] + 1
     return [*kept[:at], in_place_of(kept[at - 1], _raise(end, variable)), *kept[at:]]
 
 

@@ -138,3 +138,8 @@ def test_a_wait_with_the_asked_count_or_two_pauses_stay() -> None:
     two = program("t = wait(t, detect_objects('vase'), 2)")
     words = "wait at the vase for 4 steps, then wait at the cup for 7 steps"
     assert add_asked_pauses(two, [words], NAMES) == (two, [])  # which wait is which pause: not read
+
+
+def test_a_pause_may_be_counted_in_waypoints() -> None:
+    (pause,) = asked_pauses("hover in place for 3 waypoints as you pass the vase", NAMES)
+    assert (pause.place, pause.steps) == ("vase", 3)

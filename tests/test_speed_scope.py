@@ -168,3 +168,9 @@ def test_a_pace_placed_at_an_end_waypoint_is_the_part_the_words_name(
 ) -> None:
     code = CODE.format(step=f"t = scale_speed(t, 1.4, near={near})")
     assert localize_speed(code, [words], NAMES)[0].splitlines()[1] == step
+
+
+def test_a_pace_going_past_an_object_is_placed_there() -> None:
+    code = CODE.format(step="t = scale_speed(t, 0.5)")
+    placed = localize_speed(code, ["take it slower going past the box, roughly half speed there"], NAMES)[0]
+    assert placed.splitlines()[1] == "t = scale_speed(t, 0.5, near=detect_objects('box'))"

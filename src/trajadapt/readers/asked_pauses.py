@@ -5,16 +5,17 @@ position at the trajectory midpoint for five timesteps" came back as two shifts,
 for 10 timesteps" as ``stop_at(t, fan)``, which ends the path there (a stop for a count of timesteps
 is a pause: the path goes on after it). A clause asks a pause when it has a word for stopping or
 staying ("pause", "wait", "hold", "halt", "stop", "stay still", "keep the position", "hover",
-"linger", "idle", "dwell") and a count of timesteps ("for 10 timesteps", "5 steps"); its place is
-the one scene object it names, or the one part of the path it names (``words.PLACE_GROUPS``: "the
-midpoint", "halfway", "the destination"), or, when it points back ("hold there"), follows a lead-in
-("once at the destination, hold ...") or a pause with no count ("stop at the midpoint and idle for 5
-timesteps"), that of the clause before. A length said without a count ("for a while", "for some
-time", "briefly") is ``SOME_TIME_STEPS`` timesteps. When no ``wait`` step is in the code, the
-clause's ``stop_at`` at that place becomes ``wait`` there, else ``wait(t, <place>, <count>)`` is
-added as the last step; where the words ask one pause and the code has one ``wait`` with another
-count ("hold still for a moment" answered ``wait(t, plate, 1)``), it takes the asked one. Code that
-is not made of skill calls alone is left alone. A review note says so.
+"linger", "idle", "dwell") and a count of timesteps ("for 10 timesteps", "5 steps", "3 waypoints");
+its place is the one scene object it names, or the one part of the path it names
+(``words.PLACE_GROUPS``: "the midpoint", "halfway", "the destination"), or, when it points back
+("hold there"), follows a lead-in ("once at the destination, hold ...") or a pause with no count
+("stop at the midpoint and idle for 5 timesteps"), that of the clause before. A length said without
+a count ("for a while", "for some time", "briefly") is ``SOME_TIME_STEPS`` timesteps. When no
+``wait`` step is in the code, the clause's ``stop_at`` at that place becomes ``wait`` there, else
+``wait(t, <place>, <count>)`` is added as the last step; where the words ask one pause and the code
+has one ``wait`` with another count ("hold still for a moment" answered ``wait(t, plate, 1)``), it
+takes the asked one. Code that is not made of skill calls alone is left alone. A review note says
+so.
 """
 
 from __future__ import annotations
@@ -39,7 +40,7 @@ PAUSE_WORDS = re.compile(
     re.I,
 )
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
-COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b", re.I)
+COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:(?:time\s*)?steps?|waypoints?)\b", re.I)
 """A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps"."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"

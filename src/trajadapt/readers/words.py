@@ -19,7 +19,7 @@ NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
 """A number as the user writes it ("2", "0.2", ".5"); readers put it in their own phrases."""
 
 PLACE_WORDS = re.compile(
-    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
+    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|past|around|within|next to|beside"
     r"|approach\w*|by the|when|while|as you)\b",
     re.I,
 )

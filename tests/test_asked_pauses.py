@@ -124,7 +124,7 @@ def test_a_stop_of_its_own_stays(words: str) -> None:
     ("words", "count"),
     [
         ("pause beside the vase for 6 timesteps", 6),
-        ("when you reach the blue cup, stay still briefly", SOME_TIME_STEPS),
+        ("when you reach the vase, stay still briefly", SOME_TIME_STEPS),
     ],
 )
 def test_the_one_wait_takes_the_one_pause_count(words: str, count: int) -> None:
@@ -143,3 +143,26 @@ def test_a_wait_with_the_asked_count_or_two_pauses_stay() -> None:
 def test_a_pause_may_be_counted_in_waypoints() -> None:
     (pause,) = asked_pauses("hover in place for 3 waypoints as you pass the vase", NAMES)
     assert (pause.place, pause.steps) == ("vase", 3)
+
+
+@pytest.mark.parametrize(
+    ("words", "step"),
+    [
+        (
+            "when you reach the blue cup, stay still briefly",
+            "t = wait(t, detect_objects('vase'), 1)",
+        ),  # elsewhere
+        (
+            "pause briefly beside the vase",
+            "t = wait(t, detect_objects('vase'), 5)",
+        ),  # a vague length read as 5
+    ],
+)
+def test_a_wait_at_another_place_or_a_vague_length_read_its_own_way_stays(words: str, step: str) -> None:
+    code = program(step)
+    assert add_asked_pauses(code, [words], NAMES) == (code, [])
+
+
+def test_a_waypoint_named_as_a_place_is_no_count() -> None:
+    (pause,) = asked_pauses("hover at the middle waypoint for 5 timesteps", NAMES)
+    assert pause.steps == 5

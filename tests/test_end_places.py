@@ -175,7 +175,7 @@ def test_an_end_already_at_rest_gets_no_second_stop() -> None:
     ("words", "raised"),
     [
         ("land about 0.2 above the lamp", "t = shift_goal(t, 'up', 0.2)"),
-        ("wrap up just above the lamp", "t = shift_goal(t, 'up', 'slightly')"),
+        ("wrap up just above the lamp", "t = shift_goal(t, 'up', 0.2)"),  # the model's number stands
     ],
 )
 def test_an_end_above_an_object_ends_there_then_raises_the_goal(words: str, raised: str) -> None:
@@ -187,3 +187,9 @@ def test_an_end_above_an_object_ends_there_then_raises_the_goal(words: str, rais
 def test_an_end_already_raised_after_its_reach_stays() -> None:
     code = program("t = reach(t, detect_objects('lamp'))", "t = shift_goal(t, 'up', 0.2)")
     assert end_at_asked_places(code, ["finish 0.2 above the lamp"], NAMES) == (code, [])
+
+
+def test_an_end_just_above_an_object_with_no_raise_written_is_raised_slightly() -> None:
+    code = program("t = avoid(t, detect_objects('lamp'), 0.2)")
+    lines = end_at_asked_places(code, ["wrap up just above the lamp"], NAMES)[0].splitlines()
+    assert lines[1:-1] == ["t = reach(t, detect_objects('lamp'))", "t = shift_goal(t, 'up', 'slightly')"]

@@ -135,6 +135,7 @@ def test_an_end_is_put_back_before_a_closing_limit_that_keeps_the_ends() -> None
         ("swing wide of the lamp but finish where it finishes now", {"goal"}),
         ("start from the same point and go left", {"start"}),
         ("stop at the same height as the box", set()),
+        ("end at the same spot as the cup", set()),  # a place named: the end goes there
     ],
 )
 def test_an_end_at_the_same_spot_is_kept(words: str, ends: set[str]) -> None:

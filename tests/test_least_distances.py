@@ -40,6 +40,8 @@ def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: 
         ("come closer to the lamp, but no closer than 0.3", "t = move_closer(t, detect_objects('lamp'))"),
         ("stay at least 0.3 from the lamp", "t = move_away(t, detect_objects('lamp'), 0.4)"),  # a number given
         ("slow down at least 30% near the lamp", "t = move_away(t, detect_objects('lamp'))"),  # a pace
+        ("hop over the table, and keep at least 0.3 from the table",
+         "t = pass_over(t, detect_objects('table'))"),  # another clause asks the pass over
     ],
 )  # fmt: skip
 def test_a_step_the_words_may_ask_stays(words: str, step: str) -> None:

@@ -234,3 +234,6 @@ def test_a_whole_path_shift_beside_the_part_move_it_repeats_leaves() -> None:
     assert "t = shift(t, 'up', 0.1)" not in read.splitlines() and notes
     both = scope_to_parts(code, ["move everything up 0.1 and the end up another 0.1"])[0]
     assert both == code  # a clause with no part says up too
+    other = code.replace("shift(t, 'up', 0.1)", "shift(t, 'up', 0.2)")
+    words = ["raise the whole path 0.2 from start to end, and lift the end a further 0.1"]
+    assert scope_to_parts(other, words)[0] == other  # another amount: another clause's step

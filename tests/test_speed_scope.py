@@ -159,7 +159,7 @@ def test_a_number_of_the_speed_or_a_kept_end_names_no_part_for_the_pace(words: s
     ("words", "near", "step"),
     [
         ("pick up the pace over the final stretch", "t[-1]", "t = scale_speed(t, 1.4, part='final')"),
-        ("go a bit slower at the very beginning", "t[0, :3]", "t = scale_speed(t, 1.4, part='beginning')"),
+        ("go a bit faster at the very beginning", "t[0, :3]", "t = scale_speed(t, 1.4, part='beginning')"),
         ("slow it down by roughly 30%", "t[0]", "t = scale_speed(t, 1.4)"),  # no end named: everywhere
     ],
 )
@@ -174,3 +174,8 @@ def test_a_pace_going_past_an_object_is_placed_there() -> None:
     code = CODE.format(step="t = scale_speed(t, 0.5)")
     placed = localize_speed(code, ["take it slower going past the box, roughly half speed there"], NAMES)[0]
     assert placed.splitlines()[1] == "t = scale_speed(t, 0.5, near=detect_objects('box'))"
+
+
+def test_a_place_at_a_waypoint_of_another_list_is_no_end_of_the_path() -> None:
+    code = CODE.format(step="t = scale_speed(t, 1.4, near=pts[-1])")
+    assert localize_speed(code, ["speed up over the final stretch"], NAMES)[0] == code

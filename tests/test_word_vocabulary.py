@@ -11,7 +11,7 @@ from trajadapt.model.geometry import PAPER_AXES
 from trajadapt.readers import read_against_words
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import object_asks
-from trajadapt.readers.words import AWAY, CLOSER, FASTER, SLOWER, stated_numbers
+from trajadapt.readers.words import AWAY, CLOSER, FASTER, MINIMUM_DISTANCE, SLOWER, stated_numbers
 
 
 @pytest.mark.parametrize(
@@ -188,6 +188,8 @@ def test_past_where_the_path_ends_is_past_the_goal(words: str) -> None:
         ("speeding past the box is fine", True),
         ("keep a constant speed through the middle", False),
         ("go at the same speed past the box", False),
+        ("maintain speed through the gap", False),  # a noun after a verb
+        ("Go left. Speed past the lamp", True),
     ],
 )
 def test_speed_as_a_verb_before_a_place_asks_more_speed(words: str, faster: bool) -> None:
@@ -211,3 +213,11 @@ def test_a_pace_said_as_a_factor_is_that_factor_wherever_it_is_read() -> None:
     code = "t = get_trajectory()\nt = shift(t, 'left')\nmodified_trajectory = t"
     read, _ = read_against_words(code, ["near the lamp, move at half speed"], ["lamp"])
     assert "t = scale_speed(t, 0.5, near=detect_objects('lamp'))" in read.splitlines()
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["never stray from within 0.5 m of the lamp", "don't stop and stay within 0.3 m of the lamp"],
+)
+def test_a_negation_before_within_states_no_least_distance_unless_it_is_of_coming(words: str) -> None:
+    assert MINIMUM_DISTANCE.search(words) is None

@@ -112,10 +112,8 @@ class Problem:
 
     def broken(self, trajectory: Array, original: Array) -> int:
         """How many constraints and kept clearances ``trajectory`` breaks."""
-        violations = len(find_violations(trajectory, original, self.scene, self.constraints))
-        return violations + sum(
-            _nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept
-        )
+        kept = sum(_nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept)
+        return _violations(trajectory, original, self) + kept
 
 
 def _nearest(trajectory: Array, point: Sequence[float]) -> float:
@@ -193,17 +191,29 @@ def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
 
 
 def _keeping_what_it_can(trajectory: Array, original: Array, problem: Problem) -> Array:
-    """The projection that keeps the program's clearances too, where it breaks nothing and stays as smooth.
+    """The projection keeping the program's clearances too, where that is no worse; else the plain one.
 
-    Else the projection onto the constraints alone: a clearance the bounds leave no room for (an
-    object 0.5 from a wall, kept 0.8 from) must not pull the path across the scene.
+    No worse: it holds them, breaks no more limits than the projection onto the limits alone, and
+    stays as smooth. A clearance the bounds leave no room for (an object 0.5 from a wall, kept 0.8
+    from) must not pull the path across the scene.
     """
     plain = _project_distinct(trajectory, original, replace(problem, kept=()))
     if not problem.kept or not problem.broken(plain, original):
         return plain
     keeping = _project_distinct(trajectory, original, problem)
     smooth_enough = _longest_step(keeping) <= 1.5 * max(_longest_step(trajectory), _longest_step(plain))
-    return keeping if smooth_enough and not problem.broken(keeping, original) else plain
+    no_worse = _kept_hold(keeping, problem.kept) and _violations(keeping, original, problem) <= _violations(
+        plain, original, problem
+    )
+    return keeping if smooth_enough and no_worse else plain
+
+
+def _kept_hold(trajectory: Array, kept: Kept) -> bool:
+    return all(_nearest(trajectory, point) >= distance - 1e-9 for point, distance in kept)
+
+
+def _violations(trajectory: Array, original: Array, problem: Problem) -> int:
+    return len(find_violations(trajectory, original, problem.scene, problem.constraints))
 
 
 def _longest_step(trajectory: Array) -> float:

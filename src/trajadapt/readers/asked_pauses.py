@@ -25,7 +25,14 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from trajadapt.code_parse import after_last_step, assigned_call, called_name, in_place_of, skill_program
+from trajadapt.code_parse import (
+    after_last_step,
+    assigned_call,
+    called_name,
+    detected_name,
+    in_place_of,
+    skill_program,
+)
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.stop_words import STOPPING
 from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
@@ -40,7 +47,11 @@ PAUSE_WORDS = re.compile(
     re.I,
 )
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
-COUNT = re.compile(r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:(?:time\s*)?steps?|waypoints?)\b", re.I)
+COUNT = re.compile(
+    r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b"
+    r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty)\s+waypoints?\b",
+    re.I,
+)
 """A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps"."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
@@ -136,14 +147,20 @@ def _add_waits(lines: list[str], notes: list[str], pauses: list[AskedPause], var
 
 
 def _count_as_asked(lines: list[str], notes: list[str], pause: AskedPause) -> None:
-    """The one ``wait`` of the code given the one pause's count, where it has another number."""
+    """The one ``wait`` at the pause's place given the pause's count, where it has another number.
+
+    A length said without a count ("briefly", "for a moment") corrects only a wait shorter than 2
+    steps: a model's 5 for "pause briefly" is a reading of its own, not a mistake.
+    """
     waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
     found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
-    if found is None or len(found[1].args) != 3:
+    if found is None or len(found[1].args) != 3 or not _waits_at(found[1].args[1], pause):
         return
     tree, call, _ = found
     count = call.args[2]
     if not isinstance(count, ast.Constant) or type(count.value) is not int or count.value == pause.steps:
+        return
+    if COUNT.search(pause.clause) is None and count.value >= 2:
         return
     before = lines[waits[0]].strip()
     call.args[2] = ast.Constant(pause.steps)
@@ -153,6 +170,13 @@ def _count_as_asked(lines: list[str], notes: list[str], pause: AskedPause) -> No
         f"`{before}` -> `{after}`: the words ask a pause of {pause.steps} timesteps "
         f"({pause.clause.strip()!r})"
     )
+
+
+def _waits_at(place: ast.expr, pause: AskedPause) -> bool:
+    """Whether a ``wait``'s place argument is the pause's place (its object, or its position word)."""
+    if pause.is_object:
+        return (detected_name(place) or "").casefold() == pause.place.casefold()
+    return isinstance(place, ast.Constant) and str(place.value).strip().lower() == pause.place
 
 
 def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
@@ -177,7 +201,7 @@ def _count(clause: str) -> int:
     """The clause's count of timesteps (``SOME_TIME_STEPS`` for "for a while"), or 0."""
     found = COUNT.search(clause)
     if found is not None:
-        return whole_count(found.group(1))
+        return whole_count(found.group(1) or found.group(2))
     return SOME_TIME_STEPS if SOME_TIME.search(clause) else 0
 
 

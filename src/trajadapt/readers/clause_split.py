@@ -204,6 +204,7 @@ FIRST_END = re.compile(
 )
 SECOND_END = re.compile(
     rf"^(?:the\s+)?{_END_NOUN}\b(?!\s+(?:(?:at|near|by|up|with|on|in|beside|next|there|here|right|over|again"
+    r"|above|below|after|around|along|behind|under|inside|outside"
     r"|to|further|farther|higher|lower|more|less|a|an|[a-z]+ing)\b|\d|\.\d))",
     re.I,
 )

@@ -44,6 +44,7 @@ from trajadapt.code_parse import (
     call_of,
     called_name,
     detected_names,
+    direction_argument,
     in_place_of,
     objects_of,
     profile_kind,
@@ -196,14 +197,26 @@ def _ended_there(
 def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> list[str]:
     """``lines`` with the goal raised by ``end.above`` right after the step that ends at the object.
 
-    Another ``shift_goal`` up is the model's try at the height: the reach after it would undo it.
+    Another ``shift_goal`` up is the model's try at the height: the reach after it would undo it. Its
+    number stands where the words give none ("end just above the mug" answered with 0.05).
     """
-    kept = [line for line in lines if not (called_name(line) == "shift_goal" and "'up'" in line)]
+    ups = [i for i, line in enumerate(lines) if direction_argument(call_of(line, ("shift_goal",))) == "up"]
+    kept = [line for i, line in enumerate(lines) if i not in ups]
     ending = [index for index, line in enumerate(kept) if _ends_there(line, end)]
     if not ending:
         return lines
+    step = _raise(end, variable)
+    if not end.above[:1].isdigit() and end.above[:1] != "." and len(ups) == 1 and _has_number(lines[ups[0]]):
+        step = lines[ups[0]].strip()
     at = ending[-1] + 1
-    return [*kept[:at], in_place_of(kept[at - 1], _raise(end, variable)), *kept[at:]]
+    return [*kept[:at], in_place_of(kept[at - 1], step), *kept[at:]]
+
+
+def _has_number(line: str) -> bool:
+    """Whether a directional step gives its amount as a number."""
+    call = call_of(line, ("shift_goal",))
+    amount = call.args[2] if call is not None and len(call.args) > 2 else None
+    return isinstance(amount, ast.Constant) and isinstance(amount.value, int | float)
 
 
 def _raise(end: AskedEnd, variable: str) -> str:

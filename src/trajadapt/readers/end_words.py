@@ -44,8 +44,9 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(
-        r"\b(?P<end>finish|end|stop|start|begin)(?:s|ed|ing|ning)?\s+(?:up\s+|off\s+)?(?:at|in|on|from)\s+"
+        r"\b(?P<end>finish|end|start|begin)(?:s|ed|ing|ning)?\s+(?:up\s+|off\s+)?(?:at|in|on|from)\s+"
         r"(?:(?:exactly|just|precisely)\s+)?the\s+(?:very\s+)?same\s+(?:spot|place|point|position|location|pose)\b"
+        r"(?!\s+(?:as|where|that|which|for)\b)"
         r"|\b(?P<there>finish|end|stop)(?:s|ed|ing)?\s+(?:up\s+)?(?:exactly\s+|just\s+)?where\s+(?:it|the\s+path)"
         r"\s+(?:ends|finishes|stops|did|does|used\s+to)\b",
         re.I,

@@ -26,11 +26,13 @@ SHORT_OF_A_CLEARANCE = ("move_away", "move_closer", "pass_through", "pass_over")
 
 def keep_stated_clearances(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
     """Each step on an object that falls short of the least distance its clause states: ``avoid`` (above)."""
-    for clause in split_clauses(words, names):
+    clauses = split_clauses(words, names)
+    for clause in clauses:
         named, least = longest_names(names_in(clause, names)), MINIMUM_DISTANCE.search(clause)
         if len(named) != 1 or least is None or asks_pace(clause):
             continue
-        steps = [i for i, x in enumerate(lines) if _falls_short(x, named[0], clause)]
+        said_of_it = " ".join(c for c in clauses if names_in(c, named))  # "hop over the box, and ..."
+        steps = [i for i, x in enumerate(lines) if _falls_short(x, named[0], said_of_it)]
         if len(steps) != 1:
             continue
         before = lines[steps[0]].strip()
@@ -42,7 +44,7 @@ def keep_stated_clearances(lines: list[str], notes: list[str], words: str, names
 
 
 def _falls_short(line: str, name: str, clause: str) -> bool:
-    """Whether ``line`` is a step on object ``name`` that does not keep a least distance from it."""
+    """Whether ``line`` is a step on object ``name`` that ``clause`` (all said of it) asks no more of."""
     call = call_of(line, SHORT_OF_A_CLEARANCE)
     if not on_object(call, name) or call is None or not isinstance(call.func, ast.Name):
         return False

@@ -71,7 +71,8 @@ def asked_factor(words: str, faster: bool) -> float:
     >>> asked_factor("ease off a little as you near the lamp", faster=False) > 0.5
     True
     """
-    return stated_factor(words, faster) or speed_factor(words, faster)
+    stated = stated_factor(words, faster)
+    return stated if stated is not None else speed_factor(words, faster)
 
 
 AT_LEAST = re.compile(r"\b(?:at\s+least|no\s+less\s+than|a\s+minimum\s+of|or\s+more)\b", re.I)

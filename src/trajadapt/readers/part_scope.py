@@ -108,20 +108,30 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
 
 
 def _whole_shifts_beside_part_moves(lines: list[str], notes: list[str], words: str) -> None:
-    """A whole-path shift the way a part of the path is moved, where only clauses naming a part say it: out.
+    """A whole-path shift repeating a part move's way and amount, said only by clauses naming a part: out.
 
     "Dip the middle 0.1 lower, ending at the same spot" came back as ``shift_part(t, 'down', 0.1,
     'middle')`` and ``shift(t, 'down', 0.1)``: the one clause read twice, the middle moved twice.
     """
     unplaced = " ".join(c for c in split_clauses(words) if not PART_OR_END.search(c))
-    moved = {direction_argument(call) for _, call in _calls(lines, ("shift_part",))}
+    moved = {(direction_argument(call), _amount(call)) for _, call in _calls(lines, ("shift_part",))}
     for index, call in reversed(_calls(lines, ("shift",))):
         direction = direction_argument(call)
-        if direction in moved and direction not in said_directions(unplaced):
+        if (direction, _amount(call)) in moved and direction not in said_directions(unplaced):
             notes.append(
                 f"left out `{lines[index].strip()}`: the words move only a part of the path {direction}"
             )
             del lines[index]
+
+
+def _amount(call: ast.Call) -> str:
+    """A shift's amount as written (its third argument), '' where it has none (or ``None``)."""
+    given = call.args[2] if len(call.args) > 2 else None
+    return (
+        ""
+        if given is None or (isinstance(given, ast.Constant) and given.value is None)
+        else ast.unparse(given)
+    )
 
 
 def _add_going_on(move: PartMove, lines: list[str], notes: list[str]) -> None:

@@ -124,8 +124,11 @@ def _end_waypoint(call: ast.Call) -> str | None:
     near = next(
         (k.value for k in call.keywords if k.arg == "near"), call.args[2] if len(call.args) > 2 else None
     )
+    variable = call.args[0] if call.args else None
     if not isinstance(near, ast.Subscript) or not isinstance(near.value, ast.Name):
         return None
+    if not isinstance(variable, ast.Name) or near.value.id != variable.id:
+        return None  # a point of another list ("pts[-1]"), not the path's own end
     index = near.slice.elts[0] if isinstance(near.slice, ast.Tuple) and near.slice.elts else near.slice
     try:
         value = ast.literal_eval(index)

@@ -19,6 +19,7 @@ its amount to that end's one vague step (``shift_goal``). A review note says so.
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument, in_place_of
@@ -29,6 +30,8 @@ from trajadapt.readers.part_words import ENDS_MOVED
 from trajadapt.readers.words import intensity_word, stated_numbers
 
 DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
+UNTIL_THE_END = re.compile(r"\b(?:to|until|till|through)\s+the\s+(?:very\s+)?end\b", re.I)
+"""A span that runs to the end ("0.3 higher until the end"): no move of the goal itself."""
 
 
 def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
@@ -54,7 +57,7 @@ def _end_amounts(lines: list[str], words: str, read: set[str]) -> list[str]:
     notes: list[str] = []
     for clause in split_clauses(words):
         given = direction_amounts(clause)
-        ends = [skill for skill, named in ENDS_MOVED.items() if named.search(clause)]
+        ends = [skill for skill, named in ENDS_MOVED.items() if named.search(UNTIL_THE_END.sub(" ", clause))]
         if len(given) != 1 or len(ends) != 1 or set(given) <= read:
             continue
         ((direction, amount),) = given.items()

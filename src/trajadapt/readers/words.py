@@ -19,8 +19,8 @@ NUMBER_TEXT = r"(?:\d+\.?\d*|\.\d+)"
 """A number as the user writes it ("2", "0.2", ".5"); readers put it in their own phrases."""
 
 PLACE_WORDS = re.compile(
-    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|past|around|within|next to|beside"
-    r"|approach\w*|by the|when|while|as you)\b",
+    r"\b(?:near\w*|close|closer|proximity|vicinity|surround\w*|pass\w*|around|within|next to|beside"
+    r"|(?<!are\s)(?<!is\s)(?<!once\s)(?<!been\s)past|approach\w*|by the|when|while|as you)\b",
     re.I,
 )
 """Words that say where along the path something happens ("near the lamp", "while passing")."""
@@ -102,14 +102,15 @@ speed", "lower the robot's travel speed"; not "lower the path at constant speed"
 
 
 _SPEED_VERB = (
-    "".join(
-        f"(?<!{word} )"
-        for word in "a the your its their of at constant steady same top full half low high slow".split()
+    "(?:"
+    + "|".join(
+        f"(?<={word}\\s)"
+        for word in (r"\band", r"\bthen", r"\bto", r"\bplease", r"\bjust", r"\balso", "[,.;:!?]")
     )
-    + "speed"
+    + "|(?<!.))speed"
 )
-"""'speed' as a verb ("speed through that part", "speed past the lamp"), not a noun ("at constant speed
-through the middle", "keep the same speed along the wall")."""
+"""'speed' as a verb ("speed through that part", "and then speed past the lamp"): at the start of a
+clause or after a joining word, never a noun ("reduce speed through the door", "at constant speed")."""
 
 
 _SPEED_OF = (
@@ -186,7 +187,9 @@ PLACING = re.compile(r"^\W*(?:while|when\w*|as|once|if|until|passing|going|drivi
 
 
 MINIMUM_DISTANCE = re.compile(
-    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:(?:closer|nearer|less)\s+than|within)"
+    r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
+    r"|(?:\bno|\bnever|\bnot|n't)\s+(?:(?:ever|let\s+(?:it|the\s+\w+))\s+)?"
+    r"(?:com|get|go|pass|mov|fly|flie|driv|be)\w*\s+within"
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
     r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of)\s*"

@@ -196,9 +196,14 @@ def placed_near(call: ast.Call | None) -> str | None:
     """The object a ``scale_speed`` / ``set_speed`` step is placed near (its ``near`` point), if named."""
     if call is None or not isinstance(call.func, ast.Name) or call.func.id not in PLACED_SPEED_STEPS:
         return None
-    near = next((k.value for k in call.keywords if k.arg == "near"), None)
-    point = near if near is not None else (call.args[2] if len(call.args) > 2 else None)
+    point = near_point(call)
     return None if point is None else detected_name(point)
+
+
+def near_point(call: ast.Call) -> ast.expr | None:
+    """The expression a speed step is placed near: its ``near=`` keyword, else its third argument."""
+    near = next((k.value for k in call.keywords if k.arg == "near"), None)
+    return near if near is not None else (call.args[2] if len(call.args) > 2 else None)
 
 
 def step_on_object(line: str, name: str) -> bool:

@@ -112,8 +112,15 @@ class Problem:
 
     def broken(self, trajectory: Array, original: Array) -> int:
         """How many constraints and kept clearances ``trajectory`` breaks."""
-        kept = sum(_nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept)
-        return _violations(trajectory, original, self) + kept
+        return self.limits_broken(trajectory, original) + self.kept_broken(trajectory)
+
+    def limits_broken(self, trajectory: Array, original: Array) -> int:
+        """How many constraints ``trajectory`` breaks."""
+        return len(find_violations(trajectory, original, self.scene, self.constraints))
+
+    def kept_broken(self, trajectory: Array) -> int:
+        """How many of the program's clearances ``trajectory`` breaks."""
+        return sum(_nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept)
 
 
 def _nearest(trajectory: Array, point: Sequence[float]) -> float:
@@ -198,22 +205,13 @@ def _keeping_what_it_can(trajectory: Array, original: Array, problem: Problem) -
     from) must not pull the path across the scene.
     """
     plain = _project_distinct(trajectory, original, replace(problem, kept=()))
-    if not problem.kept or not problem.broken(plain, original):
+    plain_limits = problem.limits_broken(plain, original)
+    if not problem.kept or plain_limits + problem.kept_broken(plain) == 0:
         return plain
     keeping = _project_distinct(trajectory, original, problem)
     smooth_enough = _longest_step(keeping) <= 1.5 * max(_longest_step(trajectory), _longest_step(plain))
-    no_worse = _kept_hold(keeping, problem.kept) and _violations(keeping, original, problem) <= _violations(
-        plain, original, problem
-    )
+    no_worse = problem.kept_broken(keeping) == 0 and problem.limits_broken(keeping, original) <= plain_limits
     return keeping if smooth_enough and no_worse else plain
-
-
-def _kept_hold(trajectory: Array, kept: Kept) -> bool:
-    return all(_nearest(trajectory, point) >= distance - 1e-9 for point, distance in kept)
-
-
-def _violations(trajectory: Array, original: Array, problem: Problem) -> int:
-    return len(find_violations(trajectory, original, problem.scene, problem.constraints))
 
 
 def _longest_step(trajectory: Array) -> float:

@@ -46,6 +46,7 @@ from trajadapt.code_parse import (
     detected_names,
     direction_argument,
     in_place_of,
+    number_arguments,
     objects_of,
     profile_kind,
     skill_program,
@@ -164,9 +165,11 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     notes: list[str] = []
     if not any(_ends_there(line, end) for line in lines):
         lines, notes = _ended_there(lines, end, clauses, variable)
-    raised = _raised_end(lines, end, variable) if end.above else lines
+    raised, step = _raised_end(lines, end, variable) if end.above else (lines, "")
     if raised != lines:
-        lines, notes = raised, [*notes, _raised_note(end, variable)]
+        said = end.clause.strip()
+        notes.append(f"`{step}` after the end at the {end.place}: the words ask the end above it ({said!r})")
+        lines = raised
     if end.skill == "reach" and _rests_there(end, clauses, names) and not _ends_at_rest(lines):
         step = f"{variable} = speed_profile({variable}, 'decelerate', start={STOP_RAMP_START})"
         at = after_last_step(lines, SKILL_NAMES)
@@ -194,8 +197,8 @@ def _ended_there(
     return [*lines[:at], step, *lines[at:]], notes
 
 
-def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> list[str]:
-    """``lines`` with the goal raised by ``end.above`` right after the step that ends at the object.
+def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> tuple[list[str], str]:
+    """``lines`` with the goal raised by ``end.above`` right after its end at the object; and the raise.
 
     Another ``shift_goal`` up is the model's try at the height: the reach after it would undo it. Its
     number stands where the words give none ("end just above the mug" answered with 0.05).
@@ -204,30 +207,13 @@ def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> list[str]:
     kept = [line for i, line in enumerate(lines) if i not in ups]
     ending = [index for index, line in enumerate(kept) if _ends_there(line, end)]
     if not ending:
-        return lines
-    step = _raise(end, variable)
-    if not end.above[:1].isdigit() and end.above[:1] != "." and len(ups) == 1 and _has_number(lines[ups[0]]):
+        return lines, ""
+    stated = end.above[:1].isdigit() or end.above[:1] == "."
+    step = f"{variable} = shift_goal({variable}, 'up', {end.above if stated else repr(end.above)})"
+    if not stated and len(ups) == 1 and number_arguments(call_of(lines[ups[0]], ("shift_goal",))):
         step = lines[ups[0]].strip()
     at = ending[-1] + 1
-    return [*kept[:at], in_place_of(kept[at - 1], step), *kept[at:]]
-
-
-def _has_number(line: str) -> bool:
-    """Whether a directional step gives its amount as a number."""
-    call = call_of(line, ("shift_goal",))
-    amount = call.args[2] if call is not None and len(call.args) > 2 else None
-    return isinstance(amount, ast.Constant) and isinstance(amount.value, int | float)
-
-
-def _raise(end: AskedEnd, variable: str) -> str:
-    amount = end.above if end.above[:1].isdigit() or end.above[:1] == "." else repr(end.above)
-    return f"{variable} = shift_goal({variable}, 'up', {amount})"
-
-
-def _raised_note(end: AskedEnd, variable: str) -> str:
-    said = end.clause.strip()
-    raised = f"`{_raise(end, variable)}` after the end at the {end.place}"
-    return f"{raised}: the words ask the end above it ({said!r})"
+    return [*kept[:at], in_place_of(kept[at - 1], step), *kept[at:]], step
 
 
 def _rests_there(end: AskedEnd, clauses: list[str], names: list[str]) -> bool:

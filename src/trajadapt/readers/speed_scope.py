@@ -17,8 +17,9 @@ A slowing or speeding profile (``speed_profile(t, 'decelerate')``) as the code's
 where that clause places the pace at its object, the words name no part of the path for the pace
 (``paces.part_said_for_the_pace``) and no stop ("slow down on the approach to the person", "go
 slower as you near the lamp"), changes the speed towards the goal, not near the object: it becomes
-``scale_speed`` of the clause's calibrated factor placed there. (The one speed clause is read by
-its speed words: "ease off as you near the lamp" has none, and is left as it is.)
+``scale_speed`` of the clause's factor (``paces.asked_factor``: a stated one first) placed there.
+(The one speed clause is read by its speed words: "ease off as you near the lamp" has none, and is
+left as it is.)
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from trajadapt.code_parse import (
     PLACED_SPEED_STEPS,
     assigned_call,
     in_place_of,
+    near_point,
     placed_near,
     sole_speed_profile,
 )
@@ -121,10 +123,7 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
 
 def _end_waypoint(call: ast.Call) -> str | None:
     """'goal' or 'start' where the speed step's place is the path's own last or first waypoint (``t[-1]``)."""
-    near = next(
-        (k.value for k in call.keywords if k.arg == "near"), call.args[2] if len(call.args) > 2 else None
-    )
-    variable = call.args[0] if call.args else None
+    near, variable = near_point(call), call.args[0] if call.args else None
     if not isinstance(near, ast.Subscript) or not isinstance(near.value, ast.Name):
         return None
     if not isinstance(variable, ast.Name) or near.value.id != variable.id:

@@ -78,8 +78,9 @@ def execute(
         trajectory = validate_result(result.rows)
     except InvalidTrajectory as exc:
         return replace(ran, outcome=Failure.of("InvalidTrajectory", str(exc)))
-    kept = kept_clearances(code, case.scene) if skills else ()
+    kept: Kept = ()
     if skills:
+        kept = kept_clearances(code, case.scene)
         held, note = hold_closing_limits(code, trajectory.array, case.scene)
         if note is not None:
             trajectory, ran = validate_result(held), replace(ran, notes=(*ran.notes, note))

@@ -169,8 +169,8 @@ def speed_profile(
     t = as_trajectory(trajectory)
     s = progress(t)
     begin = float(np.clip(start, 0.0, 0.99))
-    rest = _last_rest(t, s, begin)
-    if str(kind).strip().lower() == "decelerate" and rest is not None:
+    rest = _last_rest(t, s, begin) if str(kind).strip().lower() == "decelerate" else None
+    if rest is not None:
         t[:, 3] = _slowed_after_a_rest(t, s, rest)
         return t
     local = np.clip((s - begin) / (1.0 - begin), 0.0, 1.0)

@@ -269,3 +269,42 @@ def test_the_stop_ramp_falls_over_the_judges_last_part_and_ovitas(speeds: list[f
     for after in (0.6, 0.7):  # the judges' default part, and OVITA's expectations'
         context = CheckContext(path, slowed, {}, PAPER_AXES)
         assert run_check(context, {"kind": "decelerates", "after": after}).passed
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        (
+            "stay at least 0.12 away from the jack",  # the readers' words: "12 cm" read in metres
+            "t = avoid(t, detect_objects('jack'), 12)",
+            "t = avoid(t, detect_objects('jack'), 0.12)",
+        ),
+        ("nudge it left by 0.05", "t = shift(t, 'left', 5)", "t = shift(t, 'left', 0.05)"),
+        ("drop down by 0.005", "t = shift(t, 'down', -5)", "t = shift(t, 'down', -0.005)"),
+        ("never dip below 1.3", "t = stay_above(t, 130)", "t = stay_above(t, 1.3)"),
+        (
+            "keep 0.25 to the left of the cone",
+            "t = keep_side(t, 'left', detect_objects('cone'), margin=25)",
+            "t = keep_side(t, 'left', detect_objects('cone'), margin=0.25)",
+        ),
+    ],
+)
+def test_a_length_copied_without_its_unit_is_the_users_length(
+    instruction: str, step: str, expected: str
+) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [expected] and len(notes) == 1 and "centimetres" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("pause for 2 waypoints, 0.02 above the box", "t = wait(t, 'goal', 2)"),  # a count is no length
+        ("go left 0.2 and then 20 more", "t = shift(t, 'left', 20)"),  # the words say 20 itself
+        ("slow to 0.5 near the box", "t = set_speed(t, 50, near=detect_objects('box'))"),  # a speed
+        ("left by 0.1 or 0.01", "t = shift(t, 'left', 10)"),  # 100 x one, 1000 x the other: which?
+    ],
+)
+def test_only_a_length_that_is_no_number_of_the_words_is_read_in_metres(instruction: str, step: str) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert not any("centimetres" in note for note in notes)

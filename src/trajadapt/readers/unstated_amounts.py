@@ -34,6 +34,9 @@ from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, i
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
+LENGTH_KINDS = ("distance", "height")
+LENGTH_NAMES = ("clearance", "margin")
+"""Parameters that take a length: kinds of the skills' parameters, and numbers by their name."""
 RADII = ("radius",)  # how far a speed change reaches: a number, not an amount word; made up -> the default
 
 
@@ -53,6 +56,12 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if _made_up_height(line, numbers):
             notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
             continue
+        if (in_metres := _lengths_in_metres(line, numbers)) is not None:
+            notes.append(
+                f"`{line.strip()}` -> `{in_metres}`: the instruction gives the length in centimetres or"
+                " millimetres; the scene is in metres"
+            )
+            line = in_place_of(line, in_metres)
         replaced = _replace_in_line(line, numbers, word)
         changed, what = replaced if replaced is not None else (None, "number")
         used = repr(word) if word else "the default amount"
@@ -191,6 +200,49 @@ def _drop_trailing_defaults(call: ast.Call, function: object) -> None:
 def _none_by_default(keyword: ast.keyword, defaults: dict[str, object]) -> bool:
     given_none = isinstance(keyword.value, ast.Constant) and keyword.value.value is None
     return given_none and defaults.get(keyword.arg or "") is None
+
+
+def _lengths_in_metres(line: str, numbers: list[float]) -> str | None:
+    """The line with each length the model wrote in the user's centimetres or millimetres in metres."""
+    found = _skill_call(line)
+    if found is None:
+        return None
+    tree, call, name = found
+    kinds = {p.name: kind for p, kind in skill_parameters(BY_NAME[name])}
+    given = list(zip(kinds, call.args, strict=False)) + [(k.arg or "", k.value) for k in call.keywords]
+    changed = False
+    for parameter, node in given:
+        metres = _in_centimetres(node, numbers)
+        if metres is None or not (kinds.get(parameter) in LENGTH_KINDS or parameter in LENGTH_NAMES):
+            continue
+        target = node.operand if isinstance(node, ast.UnaryOp) else node
+        assert isinstance(target, ast.Constant)
+        target.value, changed = metres, True
+    return ast.unparse(tree) if changed else None
+
+
+def _in_centimetres(node: ast.expr, numbers: list[float]) -> float | None:
+    """The user's length where the model wrote it in centimetres or millimetres, else None.
+
+    The readers read a length the user gives with a metric unit in metres ("12 cm" is 0.12), as the
+    scene's numbers are; a model that copies the number without its unit writes 12, a hundred times
+    the asked distance. A length that is no number of the words, but 100 or 1000 times exactly one
+    of them, is that number (a sign before it stays).
+    """
+    value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
+    if (
+        not isinstance(value, ast.Constant)
+        or not isinstance(value.value, int | float)
+        or isinstance(value.value, bool)
+    ):
+        return None
+    given = abs(float(value.value))
+    if given == 0 or any(abs(given - n) <= 1e-6 * max(1.0, n) for n in numbers):
+        return None
+    meant = {n for n in numbers for f in (100.0, 1000.0) if abs(given - n * f) <= 1e-6 * given}
+    if len(meant) != 1:
+        return None
+    return meant.pop()
 
 
 def _made_up(node: ast.expr, name: str, kind: str, numbers: list[float], word: str | None) -> bool:

@@ -23,6 +23,7 @@ from trajadapt.readers.asked_paces import add_asked_paces
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.asked_shapes import add_asked_shapes
+from trajadapt.readers.asked_turns import turn_as_asked
 from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.end_places import end_at_asked_places
@@ -74,6 +75,8 @@ READERS: tuple[Reader, ...] = (
     Reader("scaled-distances", "a distance from an object the words multiply", scale_distances),
     Reader("unstated-amounts", "amounts the words never give",
            lambda code, asked, _: replace_unstated_amounts(code, asked)),
+    Reader("asked-turns", "a turn's angle and sense as its clause says them",
+           lambda code, asked, _: turn_as_asked(code, asked)),
     Reader("asked-directions", "a direction a clause asks and no step makes",
            lambda code, asked, _: add_asked_directions(code, asked)),
     Reader("stated-amounts", "a clause's one direction and amount, used as said",

@@ -334,3 +334,36 @@ def test_a_share_or_a_factor_is_no_height(words):
 )
 def test_a_least_change_of_pace_is_met_beyond_it(words, faster, factor):
     assert stated_factor(words, faster) == pytest.approx(factor)
+
+
+@pytest.mark.parametrize(
+    ("words", "faster", "factor"),
+    [
+        ("crawl past the lamp at roughly a third of the current speed there", False, 1 / 3),
+        ("cruise by the crate at two-thirds of the pace", False, 2 / 3),
+        ("go at three quarters of your speed near the armchair", False, 0.75),
+        ("slow to one fifth of the speed by the lamp", False, 0.2),
+    ],
+)
+def test_a_share_of_the_speed_is_a_stated_factor(words, faster, factor):
+    assert stated_factor(words, faster) == pytest.approx(factor, abs=1e-5)
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "slow down over the last third",  # a part of the path, no count before it
+        "slow down a quarter of the way along",  # a place on the path
+        "ease off for two thirds of the route",
+    ],
+)
+def test_a_share_of_the_path_is_no_factor(words):
+    assert stated_factor(words, False) is None
+
+
+def test_a_share_of_the_speed_replaces_the_models_guess():
+    after = steps_after(
+        "crawl past the lamp at roughly a third of the current speed there",
+        "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
+    )
+    assert after == ["t = scale_speed(t, 0.333333, near=detect_objects('lamp'))"]

@@ -62,6 +62,13 @@ def test_placed_several_or_profiled_paces_stay(steps: tuple[str, ...]) -> None:
         ("t = speed_profile(t, 'constant', start=0.6)", "lower the pace gently towards the end",
          "t = speed_profile(t, 'decelerate', start=0.6)"),
         ("t = speed_profile(t, 'decelerate')", "pick up speed as you go", "t = speed_profile(t, 'accelerate')"),
+        # a pace turned down (not a direction), and where the slowing begins said as a closing share
+        ("t = speed_profile(t, 'constant')", "ramp the speed down over the final quarter until it stops",
+         "t = speed_profile(t, 'decelerate', start=0.75)"),
+        ("t = speed_profile(t, 'accelerate')", "dial it back down through the last 40% of the route",
+         "t = speed_profile(t, 'decelerate', start=0.6)"),
+        ("t = speed_profile(t, 'constant', start=0.5)", "ramp the speed down in the last third",
+         "t = speed_profile(t, 'decelerate', start=0.5)"),  # the model's own start stays
     ],
 )  # fmt: skip
 def test_a_profile_the_other_way_from_the_asked_pace_is_turned(step: str, words: str, expected: str) -> None:

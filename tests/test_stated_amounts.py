@@ -23,6 +23,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("drift 0.3 towards the right, then descend 0.05", {"right": 0.3, "down": 0.05}),
         ("carry on 1.2 further back", {"back": 1.2}),
         ("raise it 0.3", {"up": 0.3}),  # the thing moved between the verb and its amount
+        ("lift the middle by about 0.3", {"up": 0.3}),  # a rough amount is the amount
+        ("go left by roughly 0.2, then drop by ~0.1", {"left": 0.2, "down": 0.1}),
         ("lower the entire route 0.05", {"down": 0.05}),
         ("raise it 2 times", {}),  # a count
         ("shift the first 4 waypoints up", {}),  # a count, not an amount
@@ -40,6 +42,7 @@ def test_each_direction_gets_the_one_number_its_clause_gives(words: str, amounts
     [
         ("t = shift(t, 'upwards', 'slightly')", "t = shift(t, 'upwards', 0.5)"),
         ("t = shift_goal(t, 'up')", "t = shift_goal(t, 'up', 0.5)"),
+        ("t = lift_middle(t, 'up')", "t = lift_middle(t, 'up', 0.5)"),
     ],
 )
 def test_a_vague_or_missing_amount_becomes_the_stated_one_with_a_note(step: str, expected: str) -> None:

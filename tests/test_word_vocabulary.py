@@ -85,6 +85,14 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("reduce the arm's travel speed", False),
         ("drop the cruising pace a little", False),
         ("boost its top speed near the crate", True),
+        # a verb that turns the pace down or up (session 33)
+        ("ramp the speed down over the last stretch", False),
+        ("dial it back down by the crate", False),
+        ("bring the pace down near the crate", False),
+        ("taper off towards the goal", False),
+        ("wind down as you arrive", False),
+        ("crank the velocity up through the middle", True),
+        ("ramp up once past the crate", True),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:
@@ -221,3 +229,20 @@ def test_a_pace_said_as_a_factor_is_that_factor_wherever_it_is_read() -> None:
 )
 def test_a_negation_before_within_states_no_least_distance_unless_it_is_of_coming(words: str) -> None:
     assert MINIMUM_DISTANCE.search(words) is None
+
+
+@pytest.mark.parametrize(
+    "words", ["bring it down onto the crate", "wind up at the crate", "turn down the corridor"]
+)
+def test_turning_something_else_down_or_up_is_no_pace(words: str) -> None:
+    assert not FASTER.search(words) and not SLOWER.search(words)
+
+
+@pytest.mark.parametrize("words", ["slow right down by the crate", "ease way up near the crate"])
+def test_a_pace_verb_with_a_stress_word_names_no_direction(words: str) -> None:
+    assert said_directions(words) == set()
+
+
+def test_right_before_down_stresses_it() -> None:
+    assert said_directions("bring it right down onto the crate") == {"down"}
+    assert said_directions("move right down by 0.2") == {"right", "down"}  # a verb of moving: the side

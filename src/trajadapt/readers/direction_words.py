@@ -31,7 +31,7 @@ RIGHT_AS_STRESS = re.compile(
     r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"
     r"right\s+(?=(?:at|by(?!\s+(?:\d|\.\d|zero|one|two|three|four|five|six|seven|eight|nine|ten|a|an|some"
     r"|half|about|around|roughly|approximately)\b)|past|next|beside|alongside|through|over|above|below|under|underneath|behind|before"
-    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to)\b)",
+    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to|down)\b)",
     re.I,
 )
 """"Right" that stresses a place or a time, not the side: "finish right at the vest", "cruise right past
@@ -57,17 +57,18 @@ DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 
 
 _DIRECTION_ALTERNATIVES = "|".join(sorted(DIRECTION_WORDS, key=len, reverse=True))
+_ROUGHLY = r"(?:(?:about|around|roughly|approximately|approx\.?|some|nearly|almost)\s+|~\s*)"
 _WHAT_MOVES = r"it|everything|(?:the\s+)?(?:whole\s+|entire\s+)?(?:path|route|trajectory)"
 DIRECTED_NUMBER = re.compile(
-    rf"\bby\s+({NUMBER_TEXT})(?![\w.])"
+    rf"\bby\s+{_ROUGHLY}?({NUMBER_TEXT})(?![\w.])"
     rf"|(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
     rf"(?:{_DIRECTION_ALTERNATIVES})\b"
     rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+(?:(?:{_WHAT_MOVES})\s+)?({NUMBER_TEXT})(?![\w.])"
     r"(?!\s*(?:(?:way)?points?|steps?|times?|turns?))",
     re.I,
 )
-"""A number given to a direction: "by 0.2", "0.2 to the left", "0.2 further left", "0.2 over to the
-left", "rise 0.2", "raise the path 0.2" (not "up 3 times" or "left 10 points", which count)."""
+"""A number given to a direction: "by 0.2", "by about 0.2", "0.2 to the left", "0.2 further left", "0.2
+over to the left", "rise 0.2", "raise the path 0.2" (not "up 3 times" or "left 10 points", which count)."""
 
 
 def directed_numbers(clause: str) -> list[float]:

@@ -86,7 +86,8 @@ def _factor_numbers(clause: str) -> list[float]:
     """The numbers a clause gives as factors: "half", "twice", "3 times", "a factor of 2" (no distance)."""
     words = [FACTOR_WORDS[w] for w in re.findall(r"[a-z]+", clause.lower()) if w in FACTOR_WORDS]
     times = [found.group(1) or found.group(2) for found in TIMES.finditer(clause)]
-    return words + [float(NUMBER_WORDS.get(n.lower(), 0) or n) for n in times]
+    shares = [SHARE_COUNTS[n.lower()] / SHARE_PARTS[p.lower()] for n, p in SHARE_OF.findall(clause)]
+    return words + [float(NUMBER_WORDS.get(n.lower(), 0) or n) for n in times] + shares
 
 
 FACTOR_WORDS = {
@@ -97,6 +98,24 @@ TIMES = re.compile(
     rf"\b({NUMBER_TEXT}|two|three|four|five)\s*(?:times\b|x\b)|factor\s+of\s+({NUMBER_TEXT}|two|three)\b",
     re.I,
 )
+SHARE_COUNTS = {"a": 1, "one": 1, "two": 2, "three": 3, "four": 4}
+SHARE_PARTS = {
+    "third": 3,
+    "thirds": 3,
+    "quarter": 4,
+    "quarters": 4,
+    "fourth": 4,
+    "fourths": 4,
+    "fifth": 5,
+    "fifths": 5,
+}
+SHARE_OF = re.compile(
+    r"\b(a|one|two|three|four)[\s-]+(thirds?|quarters?|fourths?|fifths?)\s+of\b"
+    r"(?!\s+(?:the\s+)?(?:way|path|route|trajectory|distance|journey|flight|motion|length)\b)",
+    re.I,
+)
+"""A share said as a fraction of something ("a third of the current speed", "two-thirds of its pace"):
+a factor; "the last third" (no count before it) and "a quarter of the way" are parts of the path."""
 PERCENT = re.compile(rf"({NUMBER_TEXT})\s*(?:%|per\s*cent\b)", re.I)
 
 
@@ -129,3 +148,32 @@ def part_said_for_the_pace(clause: str, words: str, names: Sequence[str]) -> boo
         and not (names_in(c, names) or said_directions(c) or kept_ends([c]) or asked_heights(c))
     ]
     return part_named(clause) is not None or any(part_named(c) for c in others)
+
+
+CLOSING_SHARE = re.compile(
+    rf"\b(?:the\s+)?(?:last|final|closing)\s+(?:(?P<part>half|third|quarter|fifth|tenth)|(?P<percent>{NUMBER_TEXT})\s*%)"
+    r"|\b(?:the\s+)?(?P<second>second)\s+half\b",
+    re.I,
+)
+"""The closing share of the path the words name: "the last third", "the final quarter", "the last 20%",
+"the second half"."""
+SHARES = {"half": 0.5, "third": 1 / 3, "quarter": 0.25, "fifth": 0.2, "tenth": 0.1}
+
+
+def closing_share_start(words: str) -> float | None:
+    """Where the closing share of the path the words name begins ("the last third": 0.667), or None.
+
+    >>> closing_share_start("ramp the speed down over the last third")
+    0.667
+    """
+    found = {_share(m) for m in CLOSING_SHARE.finditer(words)}
+    return round(1 - found.pop(), 3) if len(found) == 1 else None
+
+
+def _share(found: re.Match[str]) -> float:
+    """The share of the path one closing share names."""
+    if found.group("second"):
+        return 0.5
+    if found.group("percent"):
+        return min(float(found.group("percent")), 100.0) / 100
+    return SHARES[found.group("part").lower()]

@@ -26,7 +26,12 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import call_of, in_place_of, profile_kind, sole_speed_profile
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.paces import STOP_RAMP_START, asked_factor, part_said_for_the_pace
+from trajadapt.readers.paces import (
+    STOP_RAMP_START,
+    asked_factor,
+    closing_share_start,
+    part_said_for_the_pace,
+)
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
 from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, asks_pace, names_in, part_named
 
@@ -130,7 +135,8 @@ def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
     start=0.7)``, which speeds the end up to the path's top speed. Words that ask only slower make a
     profile 'decelerate', only faster 'accelerate'; words of an even speed ("constant", "steady",
     "uniform speed") keep 'constant', and words of a stop keep 'decelerate' (a slowing to rest at the
-    end is no pace of the path: "speed up the opening part and end fully stopped at the crib").
+    end is no pace of the path: "speed up the opening part and end fully stopped at the crib"). A
+    slowing turned so begins where the closing share the words name begins ("over the last third").
     """
     slower, faster = bool(SLOWER.search(words)), bool(FASTER.search(words))
     if slower == faster:
@@ -147,10 +153,19 @@ def _profiles_the_right_way(code: str, words: str) -> tuple[str, list[str]]:
         if kind.value == "decelerate" and AT_REST.search(words):
             continue  # "speed up the opening part ... end right at the crib, fully stopped there"
         kind.value = wanted
+        begins = closing_share_start(words)
+        if wanted == "decelerate" and begins is not None and _start_of(call) is None:
+            call.keywords.append(ast.keyword("start", ast.Constant(begins)))
         step = f"{line.split('=')[0].strip()} = {ast.unparse(call)}"
         notes.append(f"`{line.strip()}` -> `{step}`: the words ask a {'slower' if slower else 'faster'} pace")
         lines[index] = in_place_of(line, step)
     return "\n".join(lines), notes
+
+
+def _start_of(call: ast.Call) -> ast.expr | None:
+    """Where a profile step was told to begin (its fourth argument or ``start=``), if it was."""
+    given = call.args[3:4] + [k.value for k in call.keywords if k.arg == "start"]
+    return given[0] if given else None
 
 
 def _whole_path_pace(line: str) -> bool:

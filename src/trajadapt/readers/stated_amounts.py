@@ -5,9 +5,9 @@ the table": the vague word belongs to another part of the sentence, the user's n
 clause (split by ``clause_split.split_clauses``) with exactly one direction word and exactly one
 number given to a direction (``clause_amounts.direction_amounts``: "by 0.2", "0.2 to the left") gives that
 direction its amount; the one directional step in that direction (``shift``, ``shift_goal``,
-``shift_start``, ``shift_part``) whose amount is a word or missing gets the number. A step with a
-number of its own keeps it (``unstated_amounts`` judges numbers), and a clause with two directions
-or two numbers is left alone. A number the words give only to another direction ("go a bit higher
+``shift_start``, ``shift_part``; else ``lift_middle``) whose amount is a word or missing gets the number.
+A step with a number of its own keeps it (``unstated_amounts`` judges numbers), and a clause with two
+directions or two numbers is left alone. A number the words give only to another direction ("go a bit higher
 through the middle, and after the goal continue 0.1 further back" answered with ``shift(t, 'up',
 0.1)``) is borrowed: the step gets the amount word of its own direction's clause, or the default (a
 step in a direction the words never say is left to the readers of directions: "back up by 1.5"
@@ -29,7 +29,7 @@ from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.part_words import ENDS_MOVED
 from trajadapt.readers.words import intensity_word, stated_numbers
 
-DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part")
+DIRECTIONAL_STEPS = ("shift", "shift_goal", "shift_start", "shift_part", "lift_middle")
 UNTIL_THE_END = re.compile(r"\b(?:to|until|till|through)\s+the\s+(?:very\s+)?end\b", re.I)
 """A span that runs to the end ("0.3 higher until the end"): no move of the goal itself."""
 
@@ -42,6 +42,8 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
     lines = code.splitlines()
     for direction, amount in amounts.items():
         vague = [i for i, line in enumerate(lines) if _vague_step(line) == direction]
+        shifts = [i for i in vague if called_name(lines[i]) != "lift_middle"]
+        vague = shifts or vague  # a bow of the middle takes the amount only where no shift could
         if len(vague) == 1:
             notes.append(_given(lines, vague[0], direction, amount))
     notes += _end_amounts(lines, words, set(amounts))

@@ -79,7 +79,7 @@ reached", "past where the path currently ends"."""
 
 PACE_PHRASES = re.compile(
     r"\b(?:slow|slowing|speed|speeding|calm|hurry|ramp|ramping|wind|winding|ease|easing)"
-    r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this)\s+)?(?:down|up)\b"
+    r"\s+(?:(?:it|things|the robot|the drone|the arm|everything|this|right|way|right\s+way)\s+)?(?:down|up)\b"
     r"|\b(?:slow|slowing|speed|speeding|ramp|ramping)\s+(?:the|your|its|this|that)"
     r"(?:\s+(?!and\b|then\b|to\b|so\b)[a-z]+){1,4}?\s+(?:down|up)\b"
     r"|\b(?:bring|brought|get|got|take|took|turn|dial|knock|drop|crank|push|pull)\w*\s+(?:the\s+|its\s+|your\s+)?"
@@ -120,23 +120,32 @@ _SPEED_OF = (
 """A speed after a factor that names its direction: "half your current speed", "twice the pace"."""
 
 
+_TURNING_THE_PACE = (
+    r"(?:(?:ramp|dial|crank|throttl)\w*\s+(?:(?:it|things|everything)\s+)?"
+    rf"|(?:ramp|dial|crank|throttl|bring|brought|knock|turn)\w*\s+{SPEED_NOUN}\s+)(?:back\s+)?"
+)
+"""A verb that turns a pace up or down ("ramp the speed down", "dial it back down", "crank the pace
+up", "bring the speed down"): with "down" slower, "up" faster ("bring it down" is a height)."""
 FASTER = re.compile(
     r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
     r"|sprint\w*|rush\w*|hustl\w*"
     rf"|{_SPEED_VERB}(?:s|ing|ed)?\s+(?:through|past|along|across|over|by)\b"
     rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{CHANGED_SPEED}"
-    rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN}|(?:twice|double|triple)\s+{_SPEED_OF})",
+    rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN}|(?:twice|double|triple)\s+{_SPEED_OF}"
+    rf"|{_TURNING_THE_PACE}up\b)",
     re.I,
 )
 SLOWER = re.compile(
     r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*|creep\w*|crept|tiptoe\w*|dawdl\w*|gentl\w*"
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
-    rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF})",
+    rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF}"
+    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b|\bwind(?:s|ing)?\s+down\b)",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",
-"gently" are slower; "zip", "zoom", "rush", "speed through" faster), a verb or adjective of more
+"gently", "ramp the speed down", "taper off" are slower; "zip", "zoom", "rush", "speed through",
+"crank the pace up" faster), a verb or adjective of more
 or less before a speed ("reduce your speed", "raise the pace", "at a lower speed"), and a factor
 that names its direction ("at half your current speed", "at twice the pace")."""
 

@@ -34,6 +34,16 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("hold the start and end points just as they were", {"start", "goal"}),
         ("keep the goal speed the same", set()),  # a pace of an end, not its place
         ("keep the start fixed. now move the start left", set()),  # taken back by a later request
+        # either end is both; a drone's landing spot or touchdown is its goal, its take-off its start
+        ("do not move either end", {"start", "goal"}),
+        ("fix either end point", {"start", "goal"}),
+        ("keep the landing spot where it is", {"goal"}),
+        ("the touchdown point should stay exactly where it is", {"goal"}),
+        ("leave the take-off point as it was", {"start"}),
+        ("with the same start and end", {"start", "goal"}),
+        ("land with the original goal", {"goal"}),
+        ("end with the same speed", set()),  # a pace, no end named after "same"
+        ("keep the landing gear where it is", set()),  # landing names a place only as a spot or point
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

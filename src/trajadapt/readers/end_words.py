@@ -11,7 +11,10 @@ from collections.abc import Sequence
 
 from trajadapt.readers.words import GOAL, START
 
-_END = r"(start\w*|begin\w*|initial|end|ends|ending|endpoints?|goal|final|destination|both\s+ends)"
+_END = (
+    r"(start\w*|begin\w*|initial|take[\s-]?off|end|ends|ending|endpoints?|goal|final|destination|both\s+ends"
+    r"|either\s+end|neither\s+end|landing(?=\s+(?:spot|point|pad|place|site|position|zone))|touch[\s-]?down)"
+)
 _ENDS = (
     rf"(?:both\s+)?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
     r"(?:\s+(?:positions?|points?|poses?|waypoints?|spots?|places?|locations?))?"
@@ -33,7 +36,7 @@ KEPT_ENDS = (
     ),
     re.compile(rf"\bwith\s+{_ENDS}\s+(?:fixed|pinned|unchanged|untouched|in\s+place|locked)", re.I),
     re.compile(
-        r"\b(?:at|to|on|in|into|for|reach\w*|toward\w*|keep\w*|retain\w*|preserv\w*|maintain\w*)\s+"
+        r"\b(?:at|to|on|in|into|for|with|reach\w*|toward\w*|keep\w*|retain\w*|preserv\w*|maintain\w*)\s+"
         rf"(?:the\s+|its\s+|your\s+|their\s+)?(?:same|original|usual|old|planned|intended|existing|normal"
         rf"|regular|unchanged)\s+{_ENDS}",
         re.I,
@@ -76,6 +79,7 @@ def kept_ends(requests: Sequence[str]) -> set[str]:
 def _ends_of(word: str) -> tuple[str, ...]:
     """Which ends a word names: ('start',), ('goal',), or both (endpoints, both ends)."""
     word = word.lower()
-    if word.startswith(("start", "begin", "initial")):
+    if word.startswith(("start", "begin", "initial", "take")):
         return ("start",)
-    return ("start", "goal") if word.startswith(("endpoint", "both")) or word == "ends" else ("goal",)
+    both = word.startswith(("endpoint", "both", "either", "neither")) or word == "ends"
+    return ("start", "goal") if both else ("goal",)

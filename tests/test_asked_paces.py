@@ -26,6 +26,10 @@ def program(*steps: str) -> str:
         ("maintain a uniform 0.25 all along", "t = set_speed(t, 0.25)"),
         ("from beginning to end keep the speed at 0.2", "t = set_speed(t, 0.2)"),  # no part: all of it
         ("with the pace set to .3 around the crate", "t = set_speed(t, 0.3, near=detect_objects('crate'))"),
+        # a number with a unit of speed
+        ("take the end at 0.3 m/s", "t = set_speed(t, 0.3, part='end')"),
+        ("roll by the crate at 0.15 metres per second", "t = set_speed(t, 0.15, near=detect_objects('crate'))"),
+        ("cruise at 0.5m/s", "t = set_speed(t, 0.5)"),
         # slower towards the goal or the end, decelerate, accelerate: profiles
         ("ease off as you come up to the destination", "t = speed_profile(t, 'decelerate', start=0.6)"),
         ("ease off towards the end", "t = speed_profile(t, 'decelerate', start=0.6)"),
@@ -49,6 +53,8 @@ def test_the_step_a_clause_asks(clause: str, step: str) -> None:
     "clause",
     [
         "never go faster than 0.5",  # a limit
+        "stay under 0.4 m/s near the kettle",  # a limit with its unit
+        "speed it up by 0.1 m/s",  # a change by an amount
         "cap the velocity at 2",  # a limit
         "raise the speed by 0.2",  # a change by an amount
         "don't slow down near the kettle",  # a negation

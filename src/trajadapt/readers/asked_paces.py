@@ -8,9 +8,8 @@ itself, "quick one: go left", asks none) when it
 
 - states a speed ("at a constant speed of 0.2", "the speed constant at 0.1", "set the velocity to
   0.3"; not a limit: "no faster than 2", "cap the speed at 2", "by 0.2") -> ``set_speed(t, 0.1)``;
-- asks slower at the goal or the end ("as the goal is reached", "towards the end"), or to
-  decelerate -> ``speed_profile(t, 'decelerate', start=0.7)`` (the prompt's own example); to
-  accelerate -> ``speed_profile(t, 'accelerate')``;
+- asks slower at the goal or the end ("as the goal is reached"), or to decelerate -> ``speed_profile(t,
+  'decelerate', start=0.7)`` (the prompt's example); to accelerate -> ``speed_profile(t, 'accelerate')``;
 - asks faster or slower -> ``scale_speed(t, <factor>)``: the factor the clause states ("by half")
   or the phrase table's for its amount word ("a lot slower": 0.45); a number that is no factor
   ("raise the speed by 0.2") asks an amount no factor makes, and nothing is added.
@@ -74,17 +73,19 @@ STATED_SPEED = re.compile(
     rf"|\bat\s+({NUMBER_TEXT})\s+(?:units?\s+)?(?:speed|velocity|pace)\b"
     rf"|\b(?:at|with|hold\w*|keep\w*|maintain\w*)\s+(?:a\s+|an\s+)?(?:constant|steady|uniform|even|fixed"
     rf"|unchanging|consistent)\s+"
-    rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|times\b|x\b|per\s*cent|\w*\s*(?:height|altitude|elevation|above|high|off)\b))",
+    rf"({NUMBER_TEXT})(?![\d.])(?!\s*(?:%|times\b|x\b|per\s*cent|\w*\s*(?:height|altitude|elevation|above|high|off)\b))"
+    rf"|(?<![\w.])({NUMBER_TEXT})\s*(?:m\s*/\s*s\b|mps\b|met(?:er|re)s?\s+(?:per|a|an|each)\s+second\b)",
     re.I,
 )
 """A speed said as a value: "at a speed of 0.1", "speed constant at 0.1", "at 0.3 speed", "at a
-steady 0.4", "hold a constant 0.5" (a steady number with no height word after it is a pace)."""
+steady 0.4", "hold a constant 0.5" (a steady number with no height word after it is a pace), a number
+with a unit of speed ("take the last stretch at 0.3 m/s", "0.5 metres per second")."""
 LIMIT = re.compile(
     r"\b(?:than|at\s+most|at\s+least|max\w*|min\w*|cap\w*|limit\w*|exceed\w*|under|below|beyond"
-    r"|up\s+to|no\s+more|by|factor)\b",
+    r"|up\s+to|no\s+more|by(?=\s+(?:about\s+|around\s+|roughly\s+|some\s+)?[\d.])|factor)\b",
     re.I,
 )
-"""Words that make a stated speed a limit or a change by an amount, not the speed to keep."""
+"""Words that make a stated speed a limit or a change by an amount ("by 0.2"), not the speed to keep."""
 PAST = re.compile(r"\bpast\b", re.I)  # "crawl past the lamp" places a pace, as "while passing" does
 NOT_A_PACE = re.compile(
     r"\bquick\s+(?:one|question|thing|request|favou?r|note|tweak|change|fix|ask|edit|update|word)\b", re.I

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from trajadapt.readers.least_distances import keep_stated_clearances
+from trajadapt.readers.least_distances import come_within_stated_reaches, keep_stated_clearances
 
 NAMES = ["table", "lamp"]
 
@@ -46,3 +46,42 @@ def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: 
 )  # fmt: skip
 def test_a_step_the_words_may_ask_stays(words: str, step: str) -> None:
     assert kept(words, step) == [step]
+
+
+def came_within(words: str, step: str) -> list[str]:
+    lines, notes = [step], list[str]()
+    come_within_stated_reaches(lines, notes, words, NAMES)
+    return lines
+
+
+@pytest.mark.parametrize(
+    ("words", "expected"),
+    [
+        ("on the way, swing over to within roughly 0.1 of the lamp", "t = pass_through(t, detect_objects('lamp'))"),
+        ("make a detour so the route passes within 0.25 of the table", "t = pass_through(t, detect_objects('table'))"),
+        ("park the robot within 0.2 of the table", "t = reach(t, detect_objects('table'))"),
+        ("come to a stop within about 0.1 of the lamp", "t = reach(t, detect_objects('lamp'))"),
+        ("finish within 0.1 of the lamp", "t = reach(t, detect_objects('lamp'))"),
+    ],
+)  # fmt: skip
+def test_a_clearance_where_the_words_ask_to_come_within_a_distance_passes_by(
+    words: str, expected: str
+) -> None:
+    name = "table" if "table" in words else "lamp"
+    assert came_within(words, f"t = avoid(t, detect_objects('{name}'), 0.1)") == [expected]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "never come within 0.1 of the lamp",  # a least distance
+        "don't let it get within 0.1 of the lamp",
+        "avoid getting within 0.1 of the lamp",
+        "slow down within 0.1 of the lamp",  # a pace's place
+        "stay at least 0.3 away from the lamp, and within 0.5 of it",  # a least distance said too
+        "keep within 0.1 of the table",  # another object
+    ],
+)
+def test_a_clearance_the_words_may_ask_stays(words: str) -> None:
+    step = "t = avoid(t, detect_objects('lamp'), 0.1)"
+    assert came_within(words, step) == [step]

@@ -8,6 +8,13 @@ distance (``words.MINIMUM_DISTANCE``) and asks no pace makes the one step on tha
 not keep it (``move_away`` by no number, ``move_closer`` or ``pass_through`` where the clause asks
 to come no closer nor past, ``pass_over`` where it says nothing of over or above) ``avoid(t, X,
 <the distance>)``. Used by object-asks.
+
+The other way round, a clause that asks to come within a stated distance of the one object it names
+("detour to within about 10 cm of the wall lamp", "swing by the box, within 0.2 of it"; no negation,
+no least distance, no pace) is no clearance: the one ``avoid`` of that object, which keeps the path
+that far away, becomes ``pass_through(t, X)`` (the path then passes the object closer than any
+stated distance), or ``reach(t, X)`` where the path ends there ("come to rest within 0.1 of the
+orange": ``object_words.ends_at_the_place``).
 """
 
 from __future__ import annotations
@@ -17,8 +24,22 @@ import re
 
 from trajadapt.code_parse import call_of, in_place_of, on_object
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import CLOSER, MINIMUM_DISTANCE, asks_pace, asks_visit, longest_names, names_in
+from trajadapt.readers.object_words import ends_at_the_place
+from trajadapt.readers.words import (
+    CLOSER,
+    MINIMUM_DISTANCE,
+    NUMBER_TEXT,
+    asks_pace,
+    asks_visit,
+    longest_names,
+    names_in,
+)
 
+COME_WITHIN = re.compile(
+    rf"\bwithin\s+(?:(?:about|around|roughly|approximately|some|just)\s+)?{NUMBER_TEXT}\b", re.I
+)
+"""A most distance the words state: "within 0.1", "within about 0.2" (lengths are in metres here)."""
+NEGATION = re.compile(r"\b(?:no|not|never|without|nor|avoid\w*)\b|n't\b", re.I)
 OVER = re.compile(r"\b(?:over|above|on\s+top|overhead|across\s+the\s+top)\b", re.I)
 """Words that ask to pass over an object: there ``pass_over`` keeps its clearance above it."""
 SHORT_OF_A_CLEARANCE = ("move_away", "move_closer", "pass_through", "pass_over")
@@ -60,3 +81,22 @@ def _amount_is_a_number(call: ast.Call) -> bool:
     given = call.args[2:3] + [k.value for k in call.keywords if k.arg == "amount"]
     plain = [value.operand if isinstance(value, ast.UnaryOp) else value for value in given]  # -0.3 too
     return any(isinstance(value, ast.Constant) and isinstance(value.value, int | float) for value in plain)
+
+
+def come_within_stated_reaches(lines: list[str], notes: list[str], words: str, names: list[str]) -> None:
+    """The one ``avoid`` of an object a clause asks to come within a distance of: ``pass_through`` (above)."""
+    for clause in split_clauses(words, names):
+        named = longest_names(names_in(clause, names))
+        within = COME_WITHIN.search(clause)
+        if len(named) != 1 or within is None or asks_pace(clause) or MINIMUM_DISTANCE.search(clause):
+            continue
+        if NEGATION.search(clause[: within.start()]):
+            continue
+        steps = [i for i, x in enumerate(lines) if on_object(call_of(x, ("avoid",)), named[0])]
+        if len(steps) != 1:
+            continue
+        before = lines[steps[0]].strip()
+        skill = "reach" if ends_at_the_place(clause, words) else "pass_through"
+        after = f"t = {skill}(t, detect_objects({named[0]!r}))"
+        lines[steps[0]] = in_place_of(lines[steps[0]], after)
+        notes.append(f"`{before}` -> `{after}`: the instruction asks to come {within.group(0)} of {named[0]}")

@@ -64,7 +64,7 @@ from trajadapt.code_parse import (
     step_on_object,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.least_distances import keep_stated_clearances
+from trajadapt.readers.least_distances import come_within_stated_reaches, keep_stated_clearances
 from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, ends_at_the_place, object_asks
 from trajadapt.readers.paces import asked_factor
 from trajadapt.readers.words import (
@@ -122,6 +122,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
         lines[steps[0] : steps[0] + 1] = [in_place_of(lines[steps[0]], line) for line in replaced]
     _unnamed_midpoints(lines, notes, words, names)
     keep_stated_clearances(lines, notes, words, names)
+    come_within_stated_reaches(lines, notes, words, names)
     return "\n".join(lines), notes
 
 

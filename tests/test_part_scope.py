@@ -237,3 +237,11 @@ def test_a_whole_path_shift_beside_the_part_move_it_repeats_leaves() -> None:
     other = code.replace("shift(t, 'up', 0.1)", "shift(t, 'up', 0.2)")
     words = ["raise the whole path 0.2 from start to end, and lift the end a further 0.1"]
     assert scope_to_parts(other, words)[0] == other  # another amount: another clause's step
+
+
+def test_a_whole_path_shift_beside_the_going_on_it_repeats_leaves() -> None:
+    code = "t = get_trajectory()\nt = extend(t, 0.5, direction='left')\nt = shift(t, 'left', 0.5)\nmodified_trajectory = t"
+    read, notes = scope_to_parts(code, ["carry the route on half a metre to the left past its end"])
+    assert "t = shift(t, 'left', 0.5)" not in read.splitlines() and notes
+    both = ["shift everything 0.5 left, then go on another 0.5 left past the goal"]
+    assert scope_to_parts(code, both)[0] == code  # a clause with no part says left too

@@ -40,6 +40,8 @@ def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: s
         ("the path ends too soon; keep moving a bit once you arrive", "t = extend(t)"),
         ("after reaching the goal go straight to the door", "t = append_segment(t, detect_objects('door'))"),
         ("pause 5 timesteps at the end", "t = wait(t, 'goal', 5)"),
+        ("hover there for two waypoints", "t = wait(t, 'goal', 2)"),  # the pause readers' verbs too
+        ("idle by the lamp a moment", "t = wait(t, detect_objects('lamp'))"),
         ("revolve once around the piano", "t = circle_around(t, detect_objects('piano'))"),
         ("double the number of waypoints", "t = resample(t, 2 * len(t))"),
         ("add a little random noise", "t = add_noise(t)"),

@@ -92,13 +92,16 @@ def test_a_correction_replaces_what_the_session_remembered(
 def test_a_recalled_approved_program_is_not_rewritten_by_the_word_readers(
     simple_case: Case, sandbox: Sandbox, tmp_path: Path
 ) -> None:
-    """'hover over it' has no pause word the readers know; the user's own approved program keeps its wait."""
+    """'take a breather over it' has no pause word the readers know; the user's own approved program keeps its wait."""
     program = "t = get_trajectory()\nt = append_segment(t, detect_objects('box'))\nt = wait(t, 'goal', 5)\nmodified_trajectory = t"
     bank = MemoryBank(tmp_path / "memory.jsonl")
     bank.remember(
-        "after the goal, go to the box and hover over it", "1) To the box. 2) Hover.", program, ["box"]
+        "after the goal, go to the box and take a breather over it",
+        "1) To the box. 2) Hover.",
+        program,
+        ["box"],
     )
-    case = simple_case.with_instruction("after the goal, go to the box and hover over it")
+    case = simple_case.with_instruction("after the goal, go to the box and take a breather over it")
     readers_on = replace(SessionSettings(repair_attempts=0), read_against_words=True)
     kept = AdaptationSession(
         case,

@@ -44,7 +44,7 @@ from trajadapt.code_parse import (
     parse_code,
     skill_program,
 )
-from trajadapt.model.geometry import OPPOSITE_DIRECTIONS
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.part_words import PartMove, first_count, part_moves
@@ -111,10 +111,13 @@ def _whole_shifts_beside_part_moves(lines: list[str], notes: list[str], words: s
     """A whole-path shift repeating a part move's way and amount, said only by clauses naming a part: out.
 
     "Dip the middle 0.1 lower, ending at the same spot" came back as ``shift_part(t, 'down', 0.1,
-    'middle')`` and ``shift(t, 'down', 0.1)``: the one clause read twice, the middle moved twice.
+    'middle')`` and ``shift(t, 'down', 0.1)``: the one clause read twice, the middle moved twice. A
+    going-on past the goal is such a part move too ("extend the flight 0.5 further left past the
+    end" answered ``extend(t, 0.5, 'left')`` and ``shift(t, 'left', 0.5)``).
     """
     unplaced = " ".join(c for c in split_clauses(words) if not PART_OR_END.search(c))
     moved = {(direction_argument(call), _amount(call)) for _, call in _calls(lines, ("shift_part",))}
+    moved |= {_going_on(call) for _, call in _calls(lines, ("extend",))}
     for index, call in reversed(_calls(lines, ("shift",))):
         direction = direction_argument(call)
         if (direction, _amount(call)) in moved and direction not in said_directions(unplaced):
@@ -122,6 +125,20 @@ def _whole_shifts_beside_part_moves(lines: list[str], notes: list[str], words: s
                 f"left out `{lines[index].strip()}`: the words move only a part of the path {direction}"
             )
             del lines[index]
+
+
+def _going_on(call: ast.Call) -> tuple[str | None, str]:
+    """An ``extend`` step's way and amount as written (``extend(t, 0.5, 'left')``: ('left', '0.5'))."""
+    given = {k.arg: k.value for k in call.keywords}
+    distance = call.args[1] if len(call.args) > 1 else given.get("distance")
+    direction = call.args[2] if len(call.args) > 2 else given.get("direction")
+    way = (
+        DIRECTION_SYNONYMS.get(str(direction.value).strip().lower())
+        if isinstance(direction, ast.Constant)
+        else None
+    )
+    empty = distance is None or (isinstance(distance, ast.Constant) and distance.value is None)
+    return way, "" if empty or distance is None else ast.unparse(distance)
 
 
 def _amount(call: ast.Call) -> str:

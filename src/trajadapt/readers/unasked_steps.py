@@ -116,6 +116,10 @@ TOPICS = (
             "freeze",
             "dwell",
             "second",
+            "hover",
+            "idl",
+            "hang",
+            "standstill",
         ),
     ),  # fmt: skip
     Topic(

@@ -96,3 +96,20 @@ def test_a_program_of_no_step_gets_the_asked_bend() -> None:
     code, notes = bend_as_asked(program(), ["could the route bend a bit more?"])
     assert code == program("t = exaggerate_curve(t)")
     assert notes == ["added `t = exaggerate_curve(t)`: the words ask the path to bend more and no step does"]
+
+
+@pytest.mark.parametrize(
+    "steps",
+    [
+        ("t = scale_speed(t, 1.4, part='end')",),
+        ("t = set_speed(t, 0.3)", "t = wait(t, 'goal', 2)"),
+    ],
+)
+def test_steps_of_pace_alone_get_the_asked_bend_beside_them(steps: tuple[str, ...]) -> None:
+    code, notes = bend_as_asked(program(*steps), ["let it arc out wider, and go faster at the end"])
+    assert code == program(*steps, "t = exaggerate_curve(t)") and len(notes) == 1
+
+
+def test_a_step_that_moves_the_path_may_be_the_bend_and_nothing_is_added() -> None:
+    code = program("t = lift_middle(t, 'left')", "t = scale_speed(t, 1.4)")
+    assert bend_as_asked(code, ["let it arc out wider, and go faster"]) == (code, [])

@@ -12,8 +12,9 @@ and ``smooth`` unless the words ask smoothing too, by ``exaggerate_curve(t, 0.5)
 path towards its start-goal line (``smooth`` rounds off turns but keeps a wide bend; "smoothly" says
 how, and asks neither). When no step bends either way, the asked step takes the place of a
 whole-path ``shift`` in a direction the words never say ("make the trajectory curvier" came back as
-``shift(t, 'right', 0.15)``), or is added to a program of no step at all. Code that is not made of
-skill calls alone is left alone. A review note says what changed and why.
+``shift(t, 'right', 0.15)``), or is added to a program whose steps only change its pace or pause it
+("let the path curve out wider, and speed up over the last part" came back as the speed step
+alone). Code that is not made of skill calls alone is left alone. A review note says what changed and why.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import (
+    SPEED_STEPS,
     after_last_step,
     call_of,
     called_name,
@@ -52,6 +54,8 @@ ASKED_STEP = {"more": "exaggerate_curve(t)", "less": "exaggerate_curve(t, 0.5)"}
 """For each ask, the step that makes it: less bend is the path drawn halfway towards its start-goal
 line (``smooth`` only rounds off turns and jitter: a path that bends wide keeps its bend), more is
 the path pushed away from it."""
+TIMING_STEPS = (*SPEED_STEPS, "wait")
+"""Steps that change only when the path is travelled: none of them can be the model's bend."""
 SMOOTHING = re.compile(r"\bsmooth\w*|\bjitter\w*|\bjerk\w*", re.I)
 """Words that ask smoothing too: a ``smooth`` step stays beside a straightening."""
 
@@ -102,7 +106,7 @@ def _bends_the_other_way(line: str, ask: str, words: str) -> bool:
 
 
 def _bend_where_none_does(lines: list[str], notes: list[str], step: str, ask: str, words: str) -> None:
-    """The asked bend, for a whole-path shift in a direction nobody said, or in a program of no step."""
+    """The asked bend, for a whole-path shift in a direction nobody said, or beside steps of pace alone."""
     said = said_directions(words)
     for index, line in enumerate(lines):
         direction = direction_argument(call_of(line, ("shift",)))
@@ -111,7 +115,7 @@ def _bend_where_none_does(lines: list[str], notes: list[str], step: str, ask: st
                          f"say no direction {direction}")  # fmt: skip
             lines[index] = in_place_of(line, step)
             return
-    if any(called_name(line) in SKILL_NAMES for line in lines):
-        return
+    if any(called_name(line) in SKILL_NAMES and called_name(line) not in TIMING_STEPS for line in lines):
+        return  # a step that moves the path may be the model's bend
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     notes.append(f"added `{step}`: the words ask the path to bend {ask} and no step does")

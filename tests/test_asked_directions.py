@@ -142,3 +142,20 @@ def test_a_shift_another_clause_asks_stays_beside_the_start_move() -> None:
     words = "begin 0.2 more to the left, then move the whole path left by 0.2"
     code, _ = add_asked_directions(program("t = shift(t, 'left', 0.2)"), [words])
     assert code.splitlines()[1:3] == ["t = shift_start(t, 'left')", "t = shift(t, 'left', 0.2)"]
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["crawl by the lamp, and make the route finish a little higher", "end the path a touch further up"],
+)
+def test_a_part_move_of_a_part_nobody_names_becomes_the_asked_end_move(words: str) -> None:
+    code, notes = add_asked_directions(program("t = shift_part(t, 'up', None, 'middle')"), [words])
+    assert len(code.splitlines()) == 3 and code.splitlines()[1].startswith("t = shift_goal(t, 'up'")
+    assert "no word names the part" in notes[0]
+
+
+def test_a_part_move_of_a_named_part_stays_beside_the_added_end_move() -> None:
+    code, _ = add_asked_directions(
+        program("t = shift_part(t, 'up', None, 'middle')"), ["raise the middle, and end a bit higher"]
+    )
+    assert "t = shift_part(t, 'up', None, 'middle')" in code.splitlines()

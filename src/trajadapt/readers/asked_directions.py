@@ -17,7 +17,8 @@ there, go back") gets ``shift_goal`` / ``shift_start`` in the same way, when no 
 that way. Where exactly one shift of the code goes in a direction no word says, it is the model's
 guess at the asked move, and the asked step takes its place instead of being added; so does the one
 whole-path shift the way a start move asks, when no other clause asks the path to go that way (a
-shift keeps the start, so it cannot be the start's move). Code that is
+shift keeps the start, so it cannot be the start's move), and the one part move the way an end move
+asks, where the words name no part ("end 5 cm higher" answered with the middle moved up). Code that is
 not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
 a reader left out every step it had ("0.3 over to the right" answered with ``pass_over`` of objects
@@ -150,7 +151,32 @@ def _guessed_step(
     start_shift = _shift_for_the_start(lines, direction, others) if skill == "shift_start" else None
     if start_shift is not None:
         return start_shift, "a shift keeps the start"
+    unnamed = _unnamed_part_move(lines, words, direction) if skill in END_NAMES else None
+    if unnamed is not None:
+        return unnamed, "no word names the part the step moves"
     return None
+
+
+def _unnamed_part_move(lines: list[str], words: str, direction: str) -> int | None:
+    """The index of the one part move the end's way, of a part the words never name, else None.
+
+    "Have the path end 5 cm higher" answered ``shift_part(t, 'up', None, 'middle')``: the way is the
+    clause's, the part the model's guess, and the end move takes its place.
+    """
+    moves = [
+        index
+        for index, line in enumerate(lines)
+        if called_name(line) == "shift_part" and direction in _directions(line)
+    ]
+    if len(moves) != 1:
+        return None
+    found = assigned_call(lines[moves[0]])
+    given = (
+        [] if found is None else found[1].args[3:4] + [k.value for k in found[1].keywords if k.arg == "part"]
+    )
+    part = given[0].value if given and isinstance(given[0], ast.Constant) else None
+    named = {part_named(clause) for clause in split_clauses(words)}
+    return moves[0] if isinstance(part, str) and part not in (*END_PARTS, *named) else None
 
 
 def _shift_for_the_start(lines: list[str], direction: str, others: list[str]) -> int | None:
@@ -194,6 +220,8 @@ def _directions(line: str) -> set[str]:
 
 
 END_NAMES = {"shift_goal": "goal", "shift_start": "start"}
+END_PARTS = ("start", "beginning", "end", "goal")
+"""Parts that are an end of the path: an end move's clause names one (``words.part_named``)."""
 ONCE_THERE = re.compile(
     r"\b(?:reach\w*|arriv\w*|got|get(?:s|ting)?\s+(?:to|there)|once|after|when\w*|until|before|past|beyond)\b",
     re.I,

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from trajadapt.readers.alternating_shifts import alternate_shifts
 from trajadapt.readers.asked_directions import add_asked_directions
 from trajadapt.readers.asked_paces import add_asked_paces
+from trajadapt.readers.asked_pass_overs import add_asked_pass_overs
 from trajadapt.readers.asked_pauses import add_asked_pauses
 from trajadapt.readers.asked_relations import add_asked_relations
 from trajadapt.readers.asked_shapes import add_asked_shapes
@@ -87,6 +88,8 @@ READERS: tuple[Reader, ...] = (
     Reader("scene-sides", "a side of an object nobody named, where the words name none", sides_of_the_scene),
     Reader("asked-relations", "a closer/further a clause asks of an object and no step makes",
            add_asked_relations),
+    Reader("asked-pass-overs", "objects a clause asks to pass over and no step passes over",
+           add_asked_pass_overs),
     Reader("past-the-goal", "a place the words ask to go to once the goal is reached",
            add_destination),
     Reader("asked-pauses", "a pause a clause asks for a count of timesteps (or a while) and no step makes",

@@ -35,7 +35,7 @@ from trajadapt.readers.object_mentions import chosen_referents
 from trajadapt.readers.paced_places import leave_out_moves_of_paced_places
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
-from trajadapt.readers.repeated_steps import leave_out_repeats
+from trajadapt.readers.repeated_steps import cut_copies, leave_out_repeats
 from trajadapt.readers.request_words import request_words
 from trajadapt.readers.scaled_distances import scale_distances
 from trajadapt.readers.scene_sides import sides_of_the_scene
@@ -127,7 +127,9 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     is no request, and the readers do not read it (``request_words``); an object called by a name
     no scene object has is read as the one the answer chose (``chosen_referents``). Every reader reads
     a length said with a metric unit in metres, as the scene's numbers are ("at least 20 cm" is 0.2,
-    "a metre away" is 1: ``clause_amounts.in_metres``).
+    "a metre away" is 1: ``clause_amounts.in_metres``). Back-to-back copies of a step are cut to one
+    again after the last reader: a reader's step can repeat the model's ("about 20 cm higher" answered
+    with a shift up 0.2 and a height the height reader read as that same shift).
     """
     requests = [request_words(words, names) for words in asked]
     notes = [
@@ -146,4 +148,6 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     for reader in READERS:
         code, found = reader.read(code, asked, names)
         notes += [ReaderNote(reader.name, message) for message in found]
+    code, found = cut_copies(code, "a reader's step repeated the one beside it")
+    notes += [ReaderNote(READERS[0].name, message) for message in found]
     return code, notes

@@ -24,6 +24,11 @@ LONGEST_PERIOD = 2
 def leave_out_repeats(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with each run of back-to-back copies of a step (or a pair of steps) cut to one copy."""
     del asked  # a loop is a loop whatever the words
+    return cut_copies(code, "a decoding loop, not asked")
+
+
+def cut_copies(code: str, why: str) -> tuple[str, list[str]]:
+    """``code`` with each run of back-to-back copies cut to one, and a note per run saying ``why``."""
     try:
         parse_code(code)
     except SyntaxError:
@@ -37,7 +42,7 @@ def leave_out_repeats(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
             block = lines[index : index + period]
             del lines[index + period : index + period * copies]
             shown = "; ".join(line.strip() for line in block)
-            notes.append(f"kept one `{shown}` of {copies} back-to-back copies: a decoding loop, not asked")
+            notes.append(f"kept one `{shown}` of {copies} back-to-back copies: {why}")
         index += 1
     return ("\n".join(lines), notes) if notes else (code, [])
 

@@ -23,6 +23,8 @@ CODE = "t = get_trajectory()\nt = move_away(t, detect_objects('sandal'), 'a lot'
         ("go to the left", "t = spiral(t)"),
         ("stay on the top", "t = add_noise(t)"),
         ("away from the sandal, easing off once every 5 waypoints", "t = resample(t, 5)"),  # how often
+        ("away from the sandal, then idle for three waypoints", "t = resample(t, 3)"),  # a pause's length
+        ("away from the sandal and linger for a couple of points", "t = resample(t, 2)"),
     ],
 )
 def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: str) -> None:
@@ -44,6 +46,7 @@ def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: s
         ("idle by the lamp a moment", "t = wait(t, detect_objects('lamp'))"),
         ("revolve once around the piano", "t = circle_around(t, detect_objects('piano'))"),
         ("double the number of waypoints", "t = resample(t, 2 * len(t))"),
+        ("wait for 3 waypoints, then use 80 waypoints", "t = resample(t, 80)"),  # a count besides the pause
         ("add a little random noise", "t = add_noise(t)"),
     ],
 )

@@ -34,6 +34,7 @@ class Topic:
     stems: tuple[str, ...]
     only_with: str | None = None  # guarded only when this other topic is asked for
     also: Callable[[str], bool] | None = None  # the shared vocabulary's reading of the same topic
+    otherwise: re.Pattern[str] | None = None  # the topic's stems said of something else
 
 
 TOPICS = (
@@ -149,6 +150,10 @@ TOPICS = (
             "granular",
             "step",
         ),
+        otherwise=re.compile(
+            r"\bfor\s+(?:about\s+|around\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|a\s+few"
+            r"|a\s+couple\s+of|several)\s+(?:more\s+)?(?:way)?points?\b"
+        ),  # "hover next to it for three waypoints": a pause's length, no number of waypoints
     ),  # fmt: skip
     Topic("noise", ("add_noise",), ("nois", "random", "jitter", "perturb", "stochastic", "shak", "robust")),
     Topic(
@@ -200,9 +205,12 @@ PERIOD = re.compile(
 def asks_for(topic: Topic, words: str) -> bool:
     """Whether ``words`` contain a stem of ``topic`` at the start of a word.
 
-    "Two times" is no time, and "every 4 waypoints" asks no number of waypoints.
+    "Two times" is no time, "every 4 waypoints" asks no number of waypoints, and neither does a pause
+    "for 3 waypoints" (the topic's ``otherwise``).
     """
     lowered = PERIOD.sub(" ", MULTIPLIER.sub(" ", words.lower()))
+    if topic.otherwise is not None:
+        lowered = topic.otherwise.sub(" ", lowered)
     if topic.also is not None and topic.also(words):
         return True
     return any(re.search(r"\b" + re.escape(stem), lowered) for stem in topic.stems)

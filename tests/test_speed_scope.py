@@ -179,3 +179,32 @@ def test_a_pace_going_past_an_object_is_placed_there() -> None:
 def test_a_place_at_a_waypoint_of_another_list_is_no_end_of_the_path() -> None:
     code = CODE.format(step="t = scale_speed(t, 1.4, near=pts[-1])")
     assert localize_speed(code, ["speed up over the final stretch"], NAMES)[0] == code
+
+
+@pytest.mark.parametrize(
+    ("words", "part"),
+    [
+        ("cruise the first half at a gentler pace", "first half"),
+        ("go quicker through the middle", "middle"),
+        ("start off slower", "start"),
+    ],
+)
+def test_a_whole_path_pace_goes_to_the_one_part_its_clause_names(words: str, part: str) -> None:
+    code = "t = get_trajectory()\nt = scale_speed(t, 0.65)\nmodified_trajectory = t"
+    placed, notes = localize_speed(code, [words], ["lamp"])
+    assert placed.splitlines()[1] == f"t = scale_speed(t, 0.65, part={part!r})" and notes
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "hold a steady 0.3 from start to finish",  # the whole path, ends named
+        "slow down near the lamp in the middle",  # an object's place: the other rule's
+        "slow down in the middle, then speed up at the end",  # two pace clauses
+        "ease off until you stop at the end",  # a stop: a profile
+    ],
+)
+def test_no_part_or_another_reading_leaves_the_pace_unplaced_here(words: str) -> None:
+    code = "t = get_trajectory()\nt = set_speed(t, 0.3)\nmodified_trajectory = t"
+    placed, _ = localize_speed(code, [words], ["lamp"])
+    assert "part=" not in placed

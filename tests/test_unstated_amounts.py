@@ -308,3 +308,29 @@ def test_a_length_copied_without_its_unit_is_the_users_length(
 def test_only_a_length_that_is_no_number_of_the_words_is_read_in_metres(instruction: str, step: str) -> None:
     code, notes = replace_unstated_amounts(START + step + END, [instruction])
     assert not any("centimetres" in note for note in notes)
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        ("take the first half at half speed", "t = set_speed(t, 0.5)", "t = scale_speed(t, 0.5)"),
+        ("cruise by the box at a third of the pace", "t = set_speed(t, 0.333333, near=detect_objects('box'))",
+         "t = scale_speed(t, 0.333333, near=detect_objects('box'))"),
+        ("go twice as fast", "t = set_speed(t, 2)", "t = scale_speed(t, 2)"),
+    ],
+)  # fmt: skip
+def test_a_factor_set_as_a_speed_scales_the_speed(instruction: str, step: str, expected: str) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [expected] and "states a factor" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("hold 0.5 at half the height", "t = set_speed(t, 0.5)"),  # the words say 0.5 itself
+        ("slow down to 0.3", "t = set_speed(t, 0.3)"),  # a speed, no factor
+    ],
+)
+def test_a_speed_the_words_may_give_stays_set(instruction: str, step: str) -> None:
+    code, _ = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [step]

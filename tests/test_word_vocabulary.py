@@ -91,6 +91,7 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("bring the pace down near the crate", False),
         ("taper off towards the goal", False),
         ("wind down as you arrive", False),
+        ("go easy as you pass the crate", False),
         ("crank the velocity up through the middle", True),
         ("ramp up once past the crate", True),
     ],

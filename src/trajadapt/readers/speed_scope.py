@@ -42,6 +42,7 @@ from trajadapt.readers.object_words import WITHIN
 from trajadapt.readers.paces import asked_factor, part_said_for_the_pace
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
+    ALL_ALONG,
     FASTER,
     PLACE_WORDS,
     SLOWER,
@@ -82,7 +83,33 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     words = " ".join(asked)
     code, notes = _unsaid_ends_as_places(code, words)
     placed, found = _placed_near_the_named_object(code, words, list(names))
-    return placed, notes + found
+    placed, in_part = _placed_in_the_named_part(placed, words, list(names))
+    return placed, notes + found + in_part
+
+
+def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:
+    """``code`` with its one unplaced speed step placed in the one part the one pace clause names.
+
+    "Fly the first part at half speed" came back as ``scale_speed(t, 0.5)``: the whole path slowed.
+    A pace clause that names no object and one part of the path ("the start", "the middle", "the
+    first half") places the code's one speed step with no place of its own there (``part=``); not
+    where the words slow to a stop (a profile's matter) or span the whole path ("from start to finish").
+    """
+    paced = [c for c in split_clauses(words, names) if asks_pace(c)]
+    whole = len(paced) != 1 or names_in(paced[0], names) or ALL_ALONG.search(paced[0])
+    part = None if whole else part_named(paced[0])
+    lines = code.splitlines()
+    unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, True) is not None]
+    if part is None or len(unplaced) != 1 or COMING_TO_REST.search(words):
+        return code, []
+    index = unplaced[0]
+    tree, call = _unplaced_speed_call(lines[index], True)  # type: ignore[misc]
+    call.keywords.append(ast.keyword("part", ast.Constant(part)))
+    before, after = lines[index].strip(), ast.unparse(tree)
+    lines[index] = in_place_of(lines[index], after)
+    return "\n".join(lines), [
+        f"`{before}` -> `{after}`: the instruction changes the speed in the {part} only"
+    ]
 
 
 def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:

@@ -68,6 +68,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
         if changed is None and (calibrated := _calibrate_factor(line, numbers, words)):
             changed, stated = calibrated
             used = "the factor the words state" if stated else used
+        if changed is None and (scaled := _factor_set_as_a_speed(line, words)):
+            changed, what, used = scaled, "speed (it states a factor)", "that factor"
         if changed is None and (ramp := _stop_ramp(line, numbers, words)):
             changed, what, used = ramp, "share of the path", "the product's stop ramp"
         if changed is not None and changed != line.strip():
@@ -159,6 +161,26 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
         argument.value = stated or speed_factor(words, asked)
         return ast.unparse(tree), stated is not None
     return None
+
+
+def _factor_set_as_a_speed(line: str, words: str) -> str | None:
+    """``set_speed`` of a factor the words state, where they give no speed: ``scale_speed`` of it.
+
+    "Fly the first part at half speed" came back as ``set_speed(t, 0.5)``: half the speed, not 0.5.
+    """
+    found = _skill_call(line)
+    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+        return None
+    tree, call, _ = found
+    value = call.args[1]
+    if not isinstance(value, ast.Constant) or not isinstance(value.value, int | float):
+        return None
+    digits = [float(n) for n in re.findall(r"\d+\.?\d*|\.\d+", words)]
+    stated = {stated_factor(words, faster) for faster in (False, True)} - {None}
+    if float(value.value) in digits or not any(abs(float(value.value) - f) <= 1e-6 for f in stated if f):
+        return None
+    call.func = ast.Name("scale_speed", ast.Load())
+    return ast.unparse(tree)
 
 
 def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:

@@ -137,7 +137,7 @@ FASTER = re.compile(
 )
 SLOWER = re.compile(
     r"\b(?:slow\w*|decelerat\w*|leisure\w*|brak\w*|crawl\w*|creep\w*|crept|tiptoe\w*|dawdl\w*|gentl\w*"
-    r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+easy"
+    r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+eas(?:y|ier)|go(?:es|ing)?\s+(?:easy|easier)"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
     rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF}"
     rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b|\bwind(?:s|ing)?\s+down\b)",
@@ -352,3 +352,13 @@ def part_named(words: str) -> str | None:
     named = [part for part in PART_WORDS if part not in ("all", "whole") and f" {part} " in text]
     longest = longest_names(named)
     return longest[0] if len(longest) == 1 else None
+
+
+ALL_ALONG = re.compile(
+    r"\b(?:from\s+(?:the\s+)?(?:start|beginning)\s+(?:to|till|until)\s+(?:the\s+)?(?:finish|end|goal)"
+    r"|(?:start|beginning)\s+to\s+(?:finish|end)|(?:the\s+)?(?:whole|entire)\s+(?:way|time|run|path|route|trajectory)"
+    r"|throughout|all\s+(?:the\s+way|along)|end\s+to\s+end)\b",
+    re.I,
+)
+"""Words that span the whole path ("from start to finish", "the whole way", "throughout"): the ends
+they name are no part of it."""

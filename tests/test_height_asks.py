@@ -32,6 +32,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("a minimum height of 0.25 throughout", [("stay_above", 0.25)]),
         ("allow a maximum of 3 loops", []),  # a maximum of something else
         ("cap the speed at 2", []),
+        ("nothing along the route may rise above 0.6", [("stay_below", 0.6)]),  # a negative pronoun
+        ("none of the waypoints should sink under 0.05", [("stay_above", 0.05)]),
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:

@@ -54,7 +54,8 @@ GROUND = re.compile(r"\b(?:ground|floor)\b", re.I)
 
 
 NEGATION = re.compile(
-    r"(?:\b(?:not|never|no|nowhere)\b|n't\b)(?:\s+(?!(?:and|but|or|then|while|so)\b)[\w'-]+){0,6}\s*$", re.I
+    r"(?:\b(?:not|never|no|nowhere|nothing|none|neither)\b|n't\b)(?:\s+(?!(?:and|but|or|then|while|so)\b)[\w'-]+){0,6}\s*$",
+    re.I,
 )
 """A negation earlier in the clause, with no joining word after it: "don't let the arm go below"."""
 FLIPPED = {"stay_below": "stay_above", "stay_above": "stay_below", "set_height": "set_height"}

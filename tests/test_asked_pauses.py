@@ -140,9 +140,17 @@ def test_a_wait_with_the_asked_count_or_two_pauses_stay() -> None:
     assert add_asked_pauses(two, [words], NAMES) == (two, [])  # which wait is which pause: not read
 
 
-def test_a_pause_may_be_counted_in_waypoints() -> None:
-    (pause,) = asked_pauses("hover in place for 3 waypoints as you pass the vase", NAMES)
-    assert (pause.place, pause.steps) == ("vase", 3)
+@pytest.mark.parametrize(
+    ("words", "steps"),
+    [
+        ("hover in place for 3 waypoints as you pass the vase", 3),
+        ("hang on beside the vase for a couple of waypoints", 2),
+        ("idle by the vase for a few waypoints", 3),
+    ],
+)
+def test_a_pause_may_be_counted_in_waypoints(words: str, steps: int) -> None:
+    (pause,) = asked_pauses(words, NAMES)
+    assert (pause.place, pause.steps) == ("vase", steps)
 
 
 @pytest.mark.parametrize(

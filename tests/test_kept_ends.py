@@ -44,6 +44,9 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("land with the original goal", {"goal"}),
         ("end with the same speed", set()),  # a pace, no end named after "same"
         ("keep the landing gear where it is", set()),  # landing names a place only as a spot or point
+        ("then finish where you normally would", {"goal"}),
+        ("stop where the robot usually stops", {"goal"}),
+        ("end where you like", set()),
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

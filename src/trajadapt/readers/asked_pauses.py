@@ -49,10 +49,12 @@ PAUSE_WORDS = re.compile(
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
 COUNT = re.compile(
     r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b"
-    r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty)\s+waypoints?\b",
+    r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty|(?<=a\s)couple"
+    r"|(?<=a\s)few)\s+(?:of\s+)?waypoints?\b",
     re.I,
 )
-"""A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps"."""
+"""A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps",
+"3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place)."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily)\b",

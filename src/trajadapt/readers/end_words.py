@@ -50,16 +50,17 @@ KEPT_ENDS = (
         r"\b(?P<end>finish|end|start|begin)(?:s|ed|ing|ning)?\s+(?:up\s+|off\s+)?(?:at|in|on|from)\s+"
         r"(?:(?:exactly|just|precisely)\s+)?the\s+(?:very\s+)?same\s+(?:spot|place|point|position|location|pose)\b"
         r"(?!\s+(?:as|where|that|which|for)\b)"
-        r"|\b(?P<there>finish|end|stop)(?:s|ed|ing)?\s+(?:up\s+)?(?:exactly\s+|just\s+)?where\s+(?:it|the\s+path)"
-        r"\s+(?:ends|finishes|stops|did|does|used\s+to)\b",
+        r"|\b(?P<there>finish|end|stop)(?:s|ed|ing)?\s+(?:up\s+)?(?:exactly\s+|just\s+)?where\s+"
+        r"(?:it|you|we|they|the\s+(?:path|route|robot|arm|drone|trajectory))\s+(?:(?:normally|usually|currently"
+        r"|always|originally)\s+)?(?:ends|finishes|stops|did|does|would|used\s+to)\b",
         re.I,
     ),
 )
 """Words that keep an end of the path where it is: "keeping the start and end positions the same",
 "don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
 "head to the same endpoint", "on to the usual end spot", "keeping the same start", "then finish
-exactly as before", "leave the start and end points exactly where they are", "ending at the same
-spot", "starting from the same point", "end where it ends now"."""
+exactly as before", "finish where you normally would", "leave the start and end points exactly where
+they are", "ending at the same spot", "starting from the same point", "end where it ends now"."""
 
 
 def kept_ends(requests: Sequence[str]) -> set[str]:

@@ -159,3 +159,10 @@ def test_a_part_move_of_a_named_part_stays_beside_the_added_end_move() -> None:
         program("t = shift_part(t, 'up', None, 'middle')"), ["raise the middle, and end a bit higher"]
     )
     assert "t = shift_part(t, 'up', None, 'middle')" in code.splitlines()
+
+
+def test_a_bow_of_the_middle_the_other_way_turns_the_way_its_clause_says() -> None:
+    code, notes = add_asked_directions(
+        program("t = lift_middle(t, 'up', 0.1)"), ["dip the middle of the motion by 0.1"]
+    )
+    assert code.splitlines()[1] == "t = lift_middle(t, 'down', 0.1)" and "no word asks" in notes[0]

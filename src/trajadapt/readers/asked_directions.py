@@ -106,11 +106,14 @@ def _directed_part_moves(lines: list[str], asked: Iterable[str], words: str) -> 
     """The one part move in a direction no word says, turned the way the clause naming a part asks.
 
     "Raise the second half of the path by 0.1" came back as ``shift_part(t, 'right', 0.1, part='second
-    half')``: the part and the amount are the clause's, the direction the model's guess.
+    half')``, "lower the middle about 10 cm" as ``lift_middle(t, 'up', 0.1)``: the part and the amount
+    are the clause's, the direction the model's guess.
     """
     guess = _unsaid_shift(lines, words)
+    if guess is None or called_name(lines[guess]) != "shift_part":
+        guess = _unsaid_shift(lines, words, ("lift_middle",))  # a bow of the middle, where no shift guesses
     found = assigned_call(lines[guess]) if guess is not None else None
-    if guess is None or found is None or found[2] != "shift_part" or len(found[1].args) < 2:
+    if guess is None or found is None or len(found[1].args) < 2:
         return []
     for clause in (c for request in asked for c in split_clauses(request)):
         directions = said_directions(clause)
@@ -195,13 +198,15 @@ def _shift_for_the_start(lines: list[str], direction: str, others: list[str]) ->
     return shifts[0] if len(shifts) == 1 else None
 
 
-def _unsaid_shift(lines: list[str], words: str) -> int | None:
+def _unsaid_shift(lines: list[str], words: str, steps: tuple[str, ...] = ()) -> int | None:
     """The index of the one shift whose direction no word says, the model's guess at a move; else None."""
     said = said_directions(words)
     guesses = [
         index
         for index, line in enumerate(lines)
-        if called_name(line) in UNSAID_GUESSES and (found := _directions(line)) and not found & said
+        if called_name(line) in (steps or UNSAID_GUESSES)
+        and (found := _directions(line))
+        and not found & said
     ]
     return guesses[0] if len(guesses) == 1 else None
 

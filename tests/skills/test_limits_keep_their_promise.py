@@ -72,3 +72,19 @@ def test_in_the_sandbox_the_clearance_holds_after_the_move(sandbox, clearance, d
     assert result.ok, result.error
     nearest = np.linalg.norm(np.asarray(result.rows)[:, :3] - np.array([0.1, 1.0, 0.5]), axis=1).min()
     assert nearest >= round(clearance, 3) - 1e-6
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.floats(0.3, 0.8), st.floats(0.2, 1.0))
+def test_a_clearance_holds_after_a_smoothing_written_after_it(sandbox, clearance, strength):
+    scene = Scene((SceneObject("bottle", 0.1, 1.0, 0.5),))
+    code = (
+        "t = get_trajectory()\n"
+        f"t = avoid(t, detect_objects('bottle'), {clearance:.3f})\n"
+        f"t = smooth(t, strength={strength:.3f})\n"
+        "modified_trajectory = t\n"
+    )
+    result = sandbox.run(code, Trajectory(line()), scene, ExecutionOptions(skills=True))
+    assert result.ok, result.error
+    nearest = np.linalg.norm(np.asarray(result.rows)[:, :3] - np.array([0.1, 1.0, 0.5]), axis=1).min()
+    assert nearest >= round(clearance, 3) - 1e-6

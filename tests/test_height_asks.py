@@ -34,6 +34,11 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("cap the speed at 2", []),
         ("nothing along the route may rise above 0.6", [("stay_below", 0.6)]),  # a negative pronoun
         ("none of the waypoints should sink under 0.05", [("stay_above", 0.05)]),
+        # a level said of the height itself (a height word first)
+        ("the altitude over the floor has to be kept at 0.25", [("set_height", 0.25)]),
+        ("fix the elevation at 0.4", [("set_height", 0.4)]),
+        ("have the height set to 0.15", [("set_height", 0.15)]),
+        ("keep the pace held at 0.4", []),  # a pace
     ],
 )
 def test_the_words_around_a_height_say_its_relation(words: str, heights: list[tuple[str, float]]) -> None:

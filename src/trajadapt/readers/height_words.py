@@ -27,10 +27,18 @@ AT = rf"at (?:a |an |the )?{LEVEL}(?: of)?|(?:an? |the )?{LEVEL} of|(?:fly|hover
 NAMED = rf"(?:(?:an?\s+|the\s+)?{LEVEL}\s+of\s+|z\s*=\s*|(?:a\s+)?z\s+of\s+)?"
 """How a height may be named before its number: "a height of 0.2", "an altitude of 0.1", "z = 0.2",
 "a z of 0.2"."""
+_HELD = r"(?:held|kept|maintained|fixed|set|stays?|remains?|hold|keep|maintain|is|be)"
+HELD_LEVEL = (
+    rf"(?:hold|keep|maintain|fix|set)\w*\s+(?:the\s+|its\s+|your\s+)?{LEVEL}\s+(?:\w+\s+){{0,3}}?(?:at|to)"
+    rf"|{LEVEL}\s+(?:[\w']+\s+){{0,6}}?{_HELD}\s+(?:at|to)"
+)
+"""A level said of the height itself: "hold the altitude at 0.3", "the height above the ground should be
+held at 0.1" (a height word first: "keep the speed held at 0.4" is a pace)."""
 RELATIONS = (
     ("stay_below", re.compile(rf"\b(?:{BELOW})\s+{NAMED}{NUMBER}", re.I)),
     ("stay_above", re.compile(rf"\b(?:{ABOVE})\s+{NAMED}{NUMBER}", re.I)),
     ("set_height", re.compile(rf"\b(?:{AT})\s+{NUMBER}", re.I)),
+    ("set_height", re.compile(rf"\b(?:{HELD_LEVEL})\s+{NUMBER}", re.I)),
 )
 BAND = re.compile(
     rf"\b(?:between|from)\s+{NAMED}(-?(?:{NUMBER_TEXT}))\s+(?:and|to)\s+{NAMED}(-?(?:{NUMBER_TEXT}))(?![\d.])",

@@ -129,7 +129,8 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     a length said with a metric unit in metres, as the scene's numbers are ("at least 20 cm" is 0.2,
     "a metre away" is 1: ``clause_amounts.in_metres``). Back-to-back copies of a step are cut to one
     again after the last reader: a reader's step can repeat the model's ("about 20 cm higher" answered
-    with a shift up 0.2 and a height the height reader read as that same shift).
+    with a shift up 0.2 and a height the height reader read as that same shift), and a step a reader
+    leaves out can leave two copies back to back.
     """
     requests = [request_words(words, names) for words in asked]
     notes = [

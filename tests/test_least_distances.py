@@ -24,6 +24,8 @@ def kept(words: str, step: str) -> list[str]:
         ("go round the table so you never get closer than 1.5 to the table", "t = pass_over(t, detect_objects('table'), clearance=1.5)"),
         ("keep no less than 0.4 from the lamp", "t = move_away(t, detect_objects('lamp'))"),
         ("don't pass within 0.4 of the lamp", "t = pass_through(t, detect_objects('lamp'))"),
+        ("keep 0.4 from the lamp, no closer", "t = move_away(t, detect_objects('lamp'))"),  # a distance kept
+        ("stay a full 0.4 away from the lamp", "t = move_away(t, detect_objects('lamp'))"),
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:

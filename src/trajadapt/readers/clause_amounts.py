@@ -2,7 +2,9 @@
 
 A clause (``clause_split.split_clauses``) with exactly one direction word and exactly one number
 given to a direction (``words.directed_numbers``: "by 0.2", "0.2 to the left", "raise it 0.2") gives
-that direction its amount; a direction given two different amounts has none. A length with a metric
+that direction its amount; a clause with several directions, each right after its own number ("0.1
+further right and 0.05 lower"), gives each its number; a direction given two different amounts has
+none. A length with a metric
 unit is read in metres ("5 cm lower" is 0.05, "1 m further back" is 1), as a scene's own numbers are.
 """
 
@@ -11,7 +13,7 @@ from __future__ import annotations
 import re
 
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.direction_words import directed_numbers, said_directions
+from trajadapt.readers.direction_words import directed_numbers, paired_amounts, said_directions
 from trajadapt.readers.words import NUMBER_TEXT
 
 METRIC = re.compile(
@@ -20,11 +22,12 @@ METRIC = re.compile(
 )
 """A length with its metric unit: "5 cm", "20mm", "1 m", "1.5 metres" (not a speed: "0.3 m/s")."""
 SPELLED_METRIC = re.compile(
-    r"\b(half\s+an?|an?|one)\s+((?:centi|milli)?met(?:er|re))\b(?!\s*(?:/|per\b|an?\s+second\b))",
+    r"\b(half\s+an?|an?|one)\s+(?:(?:full|whole|good)\s+)?((?:centi|milli)?met(?:er|re))\b"
+    r"(?!\s*(?:/|per\b|an?\s+second\b))",
     re.I,
 )
-"""A length said with a word for its number: "a metre", "one meter", "half a metre", "a centimetre"
-(not a speed: "a metre per second")."""
+"""A length said with a word for its number: "a metre", "one meter", "half a metre", "a full metre", "a
+centimetre" (not a speed: "a metre per second")."""
 SCALE = {"c": 0.01, "m": 0.001}
 SPELLED = {"a": 1.0, "an": 1.0, "one": 1.0, "half": 0.5}
 
@@ -61,4 +64,7 @@ def direction_amounts(words: str) -> dict[str, float]:
         numbers = directed_numbers(in_metres(clause))
         if len(said) == 1 and len(numbers) == 1:
             amounts.setdefault(next(iter(said)), []).append(numbers[0])
+        elif len(said) > 1 and set(paired := paired_amounts(in_metres(clause))) == said:
+            for direction, amount in paired.items():  # "10 cm further right and 5 cm lower"
+                amounts.setdefault(direction, []).append(amount)
     return {direction: found[0] for direction, found in amounts.items() if len(set(found)) == 1}

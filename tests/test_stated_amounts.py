@@ -31,6 +31,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("go left or right by 0.2", {}),  # two directions in one clause
         ("go left by 0.2 or by 0.3", {}),  # two numbers
         ("go left by 0.2. go left by 0.3", {}),  # two amounts for one direction
+        # several directions in one clause, each right after its own number
+        ("set the end point 0.1 further right and 0.05 lower", {"right": 0.1, "down": 0.05}),
+        ("move it 20 cm forward and 0.1 up", {"front": 0.2, "up": 0.1}),
+        ("go 0.1 to the left and up", {}),  # up has no number of its own
     ],
 )
 def test_each_direction_gets_the_one_number_its_clause_gives(words: str, amounts: dict[str, float]) -> None:
@@ -111,6 +115,7 @@ def test_a_number_the_words_may_give_to_this_step_stays(words, step):
         ("drift half a metre to the left", {"left": 0.5}),  # a number said in words (session 31)
         ("climb a meter", {"up": 1.0}),
         ("ease one centimetre back", {"back": 0.01}),
+        ("rise a full metre", {"up": 1.0}),
     ],
 )
 def test_a_length_in_a_metric_unit_is_read_in_metres(words: str, amounts: dict[str, float]) -> None:

@@ -105,3 +105,23 @@ def asked_kinds(words: str) -> frozenset[str]:
     if PATH_WORDS.search(words) or said_directions(words):
         kinds.add("place")
     return frozenset(kinds)
+
+
+PAIRED = re.compile(
+    rf"(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
+    rf"({_DIRECTION_ALTERNATIVES})\b",
+    re.I,
+)
+"""A number right before its direction word: "0.1 further right", "0.05 lower", "0.2 to the left"."""
+
+
+def paired_amounts(clause: str) -> dict[str, float]:
+    """Each direction a number stands right before, with that number, where each has one.
+
+    >>> paired_amounts("put the final position 0.1 further right and 0.05 lower")
+    {'right': 0.1, 'down': 0.05}
+    """
+    found: dict[str, set[float]] = {}
+    for number, word in PAIRED.findall(clause):
+        found.setdefault(DIRECTION_WORDS[word.lower()], set()).add(float(number))
+    return {direction: numbers.pop() for direction, numbers in found.items() if len(numbers) == 1}

@@ -208,3 +208,25 @@ def test_no_part_or_another_reading_leaves_the_pace_unplaced_here(words: str) ->
     code = "t = get_trajectory()\nt = set_speed(t, 0.3)\nmodified_trajectory = t"
     placed, _ = localize_speed(code, [words], ["lamp"])
     assert "part=" not in placed
+
+
+def test_a_pace_said_only_by_a_word_of_slower_is_placed_at_its_object_too() -> None:
+    code = "t = get_trajectory()\nt = scale_speed(t, 0.65)\nmodified_trajectory = t"
+    placed, _ = localize_speed(code, ["keep the start where it is and really crawl past the person"], NAMES)
+    assert placed.splitlines()[1] == "t = scale_speed(t, 0.65, near=detect_objects('person'))"
+
+
+@pytest.mark.parametrize(
+    ("words", "kept"),
+    [
+        (
+            "give the box a wider berth, and hold a steady 0.4 throughout",
+            False,
+        ),  # the box's clause asks no pace
+        ("give the box a wider berth, and slow down near the box", True),  # a pace clause names it
+    ],
+)
+def test_a_pace_at_an_object_no_pace_clause_names_leaves_beside_another(words: str, kept: bool) -> None:
+    placed = "t = scale_speed(t, 0.65, near=detect_objects('box'))"
+    code = "\n".join(["t = get_trajectory()", "t = set_speed(t, 0.4)", placed, "modified_trajectory = t"])
+    assert (placed in localize_speed(code, [words], NAMES)[0].splitlines()) is kept

@@ -13,13 +13,16 @@ never name (``near=detect_objects('goal')`` for "speed up in the middle of the t
 example's place, not the user's) is placed where the words say: the part they name, else the whole
 path. A review note says so. Measured on stored answers in docs/benchmarks.md.
 
+A speed step placed at an object that only clauses asking no pace name, beside another speed step,
+serves no clause and is left out.
+
 A slowing or speeding profile (``speed_profile(t, 'decelerate')``) as the code's one speed step,
 where that clause places the pace at its object, the words name no part of the path for the pace
 (``paces.part_said_for_the_pace``) and no stop ("slow down on the approach to the person", "go
 slower as you near the lamp"), changes the speed towards the goal, not near the object: it becomes
 ``scale_speed`` of the clause's factor (``paces.asked_factor``: a stated one first) placed there.
-(The one speed clause is read by its speed words: "ease off as you near the lamp" has none, and is
-left as it is.)
+(The one speed clause is the one clause with a speed word, or where none has one, the one that asks a
+pace by a word of faster or slower: "really crawl past the fan", ``words.asks_pace``.)
 """
 
 from __future__ import annotations
@@ -30,7 +33,10 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import (
     PLACED_SPEED_STEPS,
+    SPEED_STEPS,
     assigned_call,
+    call_of,
+    called_name,
     in_place_of,
     near_point,
     placed_near,
@@ -71,7 +77,8 @@ def scoped_object(words: str, names: Iterable[str]) -> str | None:
 
 def _scoped_clause(words: str, names: list[str]) -> tuple[str, str] | None:
     """The one speed clause of ``words`` and the one object it places the speed change at, if any."""
-    speed_clauses = [c for c in split_clauses(words, names) if SPEED_WORDS.search(c)]
+    clauses = split_clauses(words, names)
+    speed_clauses = [c for c in clauses if SPEED_WORDS.search(c)] or [c for c in clauses if asks_pace(c)]
     if len(speed_clauses) != 1 or not PLACE_WORDS.search(speed_clauses[0]):
         return None
     longest = longest_names(names_in(speed_clauses[0], names))
@@ -84,7 +91,28 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     code, notes = _unsaid_ends_as_places(code, words)
     placed, found = _placed_near_the_named_object(code, words, list(names))
     placed, in_part = _placed_in_the_named_part(placed, words, list(names))
-    return placed, notes + found + in_part
+    placed, unpaced = _paces_at_unpaced_objects(placed, words, list(names))
+    return placed, notes + found + in_part + unpaced
+
+
+def _paces_at_unpaced_objects(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:
+    """``code`` without speed steps placed at an object only clauses of no pace name, beside another.
+
+    "Swing out wider around the rocker, run the whole thing at a steady 0.4" came back with
+    ``set_speed(t, 0.4)`` and ``scale_speed(t, 0.65, near=rocker)``: the rocker's clause asks a
+    distance, and the pace clause is served by the other speed step.
+    """
+    clauses = split_clauses(words, names)
+    paced = {n for c in clauses if asks_pace(c) for n in names_in(c, names)}
+    unpaced_names = {n for c in clauses for n in names_in(c, names)} - paced
+    lines = code.splitlines()
+    speeds = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
+    places = {i: placed_near(call_of(lines[i], PLACED_SPEED_STEPS)) for i in speeds}
+    unpaced = [i for i in speeds if places[i] in unpaced_names]
+    if not unpaced or len(unpaced) == len(speeds):
+        return code, []
+    notes = [f"left out `{lines[i].strip()}`: no clause asks a pace near {places[i]}" for i in unpaced]
+    return "\n".join(x for i, x in enumerate(lines) if i not in unpaced), notes
 
 
 def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:

@@ -88,3 +88,18 @@ def test_a_clearance_holds_after_a_smoothing_written_after_it(sandbox, clearance
     assert result.ok, result.error
     nearest = np.linalg.norm(np.asarray(result.rows)[:, :3] - np.array([0.1, 1.0, 0.5]), axis=1).min()
     assert nearest >= round(clearance, 3) - 1e-6
+
+
+@settings(max_examples=10, deadline=None)
+@given(
+    st.floats(0.3, 0.6),
+    st.sampled_from(
+        ["t = scale_about(t, detect_objects('bottle'), 0.5)", "t = rotate(t, 20)", "t = exaggerate_curve(t)"]
+    ),
+)
+def test_a_height_cap_holds_after_a_reshaping_written_after_it(sandbox, cap, reshaping):
+    scene = Scene((SceneObject("bottle", 0.1, 1.0, 1.5),))
+    code = f"t = get_trajectory()\nt = stay_below(t, {cap:.3f})\n{reshaping}\nmodified_trajectory = t\n"
+    result = sandbox.run(code, Trajectory(line()), scene, ExecutionOptions(skills=True))
+    assert result.ok, result.error
+    assert np.asarray(result.rows)[:, 2].max() <= round(cap, 3) + 1e-6

@@ -134,7 +134,7 @@ LIMITS = frozenset({"avoid", "stay_above", "stay_below"})
 """Steps that set a limit: a clearance from objects, a height bound."""
 FREE_MOVES = frozenset(
     {"shift", "shift_goal", "shift_start", "shift_part", "lift_middle", "move_closer", "move_away"}
-    | {"zigzag", "smooth"}
+    | {"zigzag", "smooth", "scale_about", "rotate", "exaggerate_curve"}
 )
 """Moves that may run before a limit: none ends the path at a point or puts it through one (a smoothing
 after a clearance pulls the path back into it: "keep 0.2 from the cake and smooth the path out")."""

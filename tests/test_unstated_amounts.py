@@ -283,6 +283,11 @@ def test_the_stop_ramp_falls_over_the_judges_last_part_and_ovitas(speeds: list[f
         ("drop down by 0.005", "t = shift(t, 'down', -5)", "t = shift(t, 'down', -0.005)"),
         ("never dip below 1.3", "t = stay_above(t, 130)", "t = stay_above(t, 1.3)"),
         (
+            "keep 0.4 from the person, no closer",
+            "t = avoid(t, detect_objects('person'), 0.04)",
+            "t = avoid(t, detect_objects('person'), 0.4)",
+        ),  # a place slipped
+        (
             "keep 0.25 to the left of the cone",
             "t = keep_side(t, 'left', detect_objects('cone'), margin=25)",
             "t = keep_side(t, 'left', detect_objects('cone'), margin=0.25)",
@@ -293,7 +298,7 @@ def test_a_length_copied_without_its_unit_is_the_users_length(
     instruction: str, step: str, expected: str
 ) -> None:
     code, notes = replace_unstated_amounts(START + step + END, [instruction])
-    assert steps(code) == [expected] and len(notes) == 1 and "centimetres" in notes[0]
+    assert steps(code) == [expected] and len(notes) == 1 and "another unit" in notes[0]
 
 
 @pytest.mark.parametrize(
@@ -307,7 +312,7 @@ def test_a_length_copied_without_its_unit_is_the_users_length(
 )
 def test_only_a_length_that_is_no_number_of_the_words_is_read_in_metres(instruction: str, step: str) -> None:
     code, notes = replace_unstated_amounts(START + step + END, [instruction])
-    assert not any("centimetres" in note for note in notes)
+    assert not any("another unit" in note for note in notes)
 
 
 @pytest.mark.parametrize(

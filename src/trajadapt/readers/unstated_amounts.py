@@ -34,6 +34,8 @@ from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, i
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
+UNIT_SLIPS = (1000.0, 100.0)
+"""How far off a length written in the user's unit is: centimetres or millimetres copied as metres."""
 LENGTH_KINDS = ("distance", "height")
 LENGTH_NAMES = ("clearance", "margin")
 """Parameters that take a length: kinds of the skills' parameters, and numbers by their name."""
@@ -58,8 +60,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
             continue
         if (in_metres := _lengths_in_metres(line, numbers)) is not None:
             notes.append(
-                f"`{line.strip()}` -> `{in_metres}`: the instruction gives the length in centimetres or"
-                " millimetres; the scene is in metres"
+                f"`{line.strip()}` -> `{in_metres}`: the step wrote the instruction's length in another"
+                " unit (the scene is in metres)"
             )
             line = in_place_of(line, in_metres)
         replaced = _replace_in_line(line, numbers, word)
@@ -248,8 +250,8 @@ def _in_centimetres(node: ast.expr, numbers: list[float]) -> float | None:
 
     The readers read a length the user gives with a metric unit in metres ("12 cm" is 0.12), as the
     scene's numbers are; a model that copies the number without its unit writes 12, a hundred times
-    the asked distance. A length that is no number of the words, but 100 or 1000 times exactly one
-    of them, is that number (a sign before it stays).
+    the asked distance. A length that is no number of the words, but 100 or 1000 times exactly one of
+    them, is that number (a sign before it stays).
     """
     value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
     if (
@@ -261,7 +263,7 @@ def _in_centimetres(node: ast.expr, numbers: list[float]) -> float | None:
     given = abs(float(value.value))
     if given == 0 or any(abs(given - n) <= 1e-6 * max(1.0, n) for n in numbers):
         return None
-    meant = {n for n in numbers for f in (100.0, 1000.0) if abs(given - n * f) <= 1e-6 * given}
+    meant = {n for n in numbers for f in UNIT_SLIPS if abs(given - n * f) <= 1e-6 * given}
     if len(meant) != 1:
         return None
     return meant.pop()

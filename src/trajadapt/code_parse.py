@@ -115,6 +115,16 @@ def number_arguments(call: ast.Call | None) -> list[float]:
     ]
 
 
+def signed_number(node: ast.expr) -> float | None:
+    """The value of a plain number written as an argument (``12``, ``-0.5``), else None."""
+    value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
+    if not isinstance(value, ast.Constant) or not isinstance(value.value, int | float):
+        return None
+    if isinstance(value.value, bool):
+        return None
+    return -float(value.value) if value is not node else float(value.value)
+
+
 def profile_kind(call: ast.Call | None) -> ast.Constant | None:
     """The kind of a ``speed_profile`` call ('decelerate', 'accelerate', ...) as its constant node.
 

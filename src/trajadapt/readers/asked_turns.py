@@ -17,7 +17,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of
+from trajadapt.code_parse import assigned_call, in_place_of, signed_number
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 
@@ -101,15 +101,7 @@ def _written_degrees(call: ast.Call) -> float | None:
     given = call.args[1:2] + [k.value for k in call.keywords if k.arg == "degrees"]
     if len(given) != 1:
         return None
-    node = given[0]
-    value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
-    if (
-        not isinstance(value, ast.Constant)
-        or not isinstance(value.value, int | float)
-        or isinstance(value.value, bool)
-    ):
-        return None
-    return -float(value.value) if value is not node else float(value.value)
+    return signed_number(given[0])
 
 
 def _set_degrees(call: ast.Call, value: ast.expr) -> None:

@@ -27,7 +27,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of, profile_kind
+from trajadapt.code_parse import assigned_call, in_place_of, profile_kind, signed_number
 from trajadapt.llm.answer_grammar import skill_parameters
 from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, stated_factor
 from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
@@ -253,14 +253,10 @@ def _in_centimetres(node: ast.expr, numbers: list[float]) -> float | None:
     the asked distance. A length that is no number of the words, but 100 or 1000 times exactly one of
     them, is that number (a sign before it stays).
     """
-    value = node.operand if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub) else node
-    if (
-        not isinstance(value, ast.Constant)
-        or not isinstance(value.value, int | float)
-        or isinstance(value.value, bool)
-    ):
+    written = signed_number(node)
+    if written is None:
         return None
-    given = abs(float(value.value))
+    given = abs(written)
     if given == 0 or any(abs(given - n) <= 1e-6 * max(1.0, n) for n in numbers):
         return None
     meant = {n for n in numbers for f in UNIT_SLIPS if abs(given - n * f) <= 1e-6 * given}

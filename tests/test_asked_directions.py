@@ -166,3 +166,9 @@ def test_a_bow_of_the_middle_the_other_way_turns_the_way_its_clause_says() -> No
         program("t = lift_middle(t, 'up', 0.1)"), ["dip the middle of the motion by 0.1"]
     )
     assert code.splitlines()[1] == "t = lift_middle(t, 'down', 0.1)" and "no word asks" in notes[0]
+
+
+def test_a_part_move_another_clause_asks_stays_beside_the_end_move() -> None:
+    words = "bring the path up halfway along, and make it end a bit higher"
+    code, _ = add_asked_directions(program("t = shift_part(t, 'up', None, 'middle')"), [words])
+    assert "t = shift_part(t, 'up', None, 'middle')" in code.splitlines()

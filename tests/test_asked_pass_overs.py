@@ -31,6 +31,9 @@ def program(*steps: str) -> str:
         ("hover above the crate for a moment", []),  # a pause placed there
         ("fly over to the lamp after the goal", []),  # a move over to a place
         ("speed up over the last stretch", []),  # no object
+        ("shift the path over towards the crate a bit", []),  # over as a side, no object right after
+        ("stay over 0.2 away from the lamp", []),  # over as more than
+        ("lean over toward the lamp", []),
     ],
 )
 def test_the_objects_a_clause_asks_to_pass_over(words: str, objects: list[str]) -> None:
@@ -91,3 +94,17 @@ def test_the_path_made_passes_over_the_object() -> None:
     adapted = np.asarray(scope["modified_trajectory"])
     nearest = int(np.argmin(np.linalg.norm(adapted[:, :2] - crate[:2], axis=1)))
     assert np.linalg.norm(adapted[nearest, :2] - crate[:2]) < 0.05 and adapted[nearest, 2] > crate[2]
+
+
+def test_a_height_said_before_the_word_is_the_clearance() -> None:
+    code, _ = add_asked_pass_overs(
+        program("t = avoid(t, detect_objects('crate'), 0.2)"), ["fly 0.2 over the crate"], NAMES
+    )
+    assert code == program("t = pass_over(t, detect_objects('crate'), 0.2)")
+
+
+def test_a_move_up_by_a_keyword_amount_is_no_guess() -> None:
+    code, notes = add_asked_pass_overs(
+        program("t = shift(t, 'up', amount=0.2)"), ["go over the crate"], NAMES
+    )
+    assert "t = shift(t, 'up', amount=0.2)" in code and notes[0].startswith("added")

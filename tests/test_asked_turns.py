@@ -42,6 +42,9 @@ def test_the_clause_gives_the_angle_and_its_sign(words: str, written: int, expec
         ("rotate it 30 degrees clockwise, then rotate it 10 more", ["t = rotate(t, 30)"]),  # two turns asked
         ("rotate it 30 degrees clockwise", ["t = rotate(t, 30)", "t = rotate(t, 10)"]),  # two turns written
         ("shift it left by 0.2", ["t = rotate(t, 30)"]),  # no turn asked: other readers' matter
+        ("rotate the path 30 degrees about its left end", ["t = rotate(t, 30)"]),  # a place, no sense
+        ("swing out to the left around the box", ["t = rotate(t, 10)"]),  # no verb of turning
+        ("make a three quarter turn clockwise", ["t = rotate(t, 270)"]),  # not a quarter
     ],
 )
 def test_what_the_words_say_or_cannot_tell_is_left(words: str, steps: list[str]) -> None:

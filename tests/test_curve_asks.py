@@ -113,3 +113,12 @@ def test_steps_of_pace_alone_get_the_asked_bend_beside_them(steps: tuple[str, ..
 def test_a_step_that_moves_the_path_may_be_the_bend_and_nothing_is_added() -> None:
     code = program("t = lift_middle(t, 'left')", "t = scale_speed(t, 1.4)")
     assert bend_as_asked(code, ["let it arc out wider, and go faster"]) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["slow down where the path bends more sharply", "don't make it any curvier, just slow down"],
+)
+def test_a_bend_that_only_places_a_pace_or_is_refused_is_not_added(words: str) -> None:
+    code = program("t = scale_speed(t, 0.65)")
+    assert bend_as_asked(code, [words]) == (code, [])

@@ -82,8 +82,15 @@ def test_a_clearance_where_the_words_ask_to_come_within_a_distance_passes_by(
         "slow down within 0.1 of the lamp",  # a pace's place
         "stay at least 0.3 away from the lamp, and within 0.5 of it",  # a least distance said too
         "keep within 0.1 of the table",  # another object
+        "go around the lamp, staying within 0.2 of it",  # a band kept all along, not a visit
     ],
 )
 def test_a_clearance_the_words_may_ask_stays(words: str) -> None:
     step = "t = avoid(t, detect_objects('lamp'), 0.1)"
     assert came_within(words, step) == [step]
+
+
+def test_the_step_keeps_the_programs_own_variable() -> None:
+    lines, notes = ["traj = avoid(traj, detect_objects('lamp'), 0.2)"], list[str]()
+    come_within_stated_reaches(lines, notes, "detour to within about 0.1 of the lamp", NAMES)
+    assert lines == ["traj = pass_through(traj, detect_objects('lamp'))"]

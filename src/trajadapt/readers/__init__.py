@@ -149,6 +149,8 @@ def read_against_words(code: str, asked: Sequence[str], names: Sequence[str]) ->
     for reader in READERS:
         code, found = reader.read(code, asked, names)
         notes += [ReaderNote(reader.name, message) for message in found]
-    code, found = cut_copies(code, "a reader's step repeated the one beside it")
+    code, found = cut_copies(
+        code, "back to back after the readers (a reader wrote or left out a step between)"
+    )
     notes += [ReaderNote(READERS[0].name, message) for message in found]
     return code, notes

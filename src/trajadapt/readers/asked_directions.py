@@ -18,7 +18,8 @@ that way. Where exactly one shift of the code goes in a direction no word says, 
 guess at the asked move, and the asked step takes its place instead of being added; so does the one
 whole-path shift the way a start move asks, when no other clause asks the path to go that way (a
 shift keeps the start, so it cannot be the start's move), and the one part move the way an end move
-asks, where the words name no part ("end 5 cm higher" answered with the middle moved up). Code that is
+asks, where the words name no part and no other clause says that way ("end 5 cm higher" answered
+with the middle moved up). Code that is
 not made of skill calls alone is left alone (what
 it moves cannot be read). Code with no step at all gets the shift too: whether the model wrote it or
 a reader left out every step it had ("0.3 over to the right" answered with ``pass_over`` of objects
@@ -154,7 +155,8 @@ def _guessed_step(
     start_shift = _shift_for_the_start(lines, direction, others) if skill == "shift_start" else None
     if start_shift is not None:
         return start_shift, "a shift keeps the start"
-    unnamed = _unnamed_part_move(lines, words, direction) if skill in END_NAMES else None
+    asked_too = any(direction in said_directions(other) for other in others)
+    unnamed = _unnamed_part_move(lines, words, direction) if skill in END_NAMES and not asked_too else None
     if unnamed is not None:
         return unnamed, "no word names the part the step moves"
     return None

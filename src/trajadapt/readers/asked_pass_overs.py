@@ -7,7 +7,9 @@ clearance, and the path never crossed the objects. A clause asks to pass over th
 names after a word of passing over (``OVER_WORDS``: "over", "above", "across the top of", "over the
 top of"), unless it negates, moves over to a place ("fly over to the lantern"), or ends or pauses
 there ("finish 10 cm above the soap", "hover above it": a place of its own, left to the end and pause
-readers). When no step passes over anything:
+readers), and only objects named right after the word ("over towards the cup", "over 0.2 away from the
+box" pass over nothing). A height said before the word ("fly 0.2 over the box") is the pass's
+clearance. When no step passes over anything:
 
 - the one step on one of them that is not ``pass_over`` (``avoid``, ``move_away``, ``keep_side``,
   ``pass_through``, ``move_closer``) becomes ``pass_over`` of them;
@@ -36,7 +38,7 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import longest_names, names_in
+from trajadapt.readers.words import NUMBER_TEXT, longest_names, names_in
 from trajadapt.skills import SKILL_NAMES
 
 OVER_WORDS = re.compile(
@@ -62,10 +64,10 @@ def add_asked_pass_overs(code: str, asked: Iterable[str], names: Iterable[str]) 
     """``code`` with ``pass_over`` of the objects the words ask to pass over (see the module), noted."""
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
-    wanted = passed_over(" ".join(asked), list(names))
+    wanted, height = _passes(" ".join(asked), list(names))
     if program is None or not wanted or any(called_name(line) == "pass_over" for line in lines):
         return code, []
-    step = _step(program[1], wanted)
+    step = _step(program[1], wanted, height)
     index, why = _guessed_step(lines, wanted)
     if index is not None:
         note = f"`{lines[index].strip()}` -> `{step}`: the words ask to pass over {_listed(wanted)}, {why}"
@@ -78,18 +80,28 @@ def add_asked_pass_overs(code: str, asked: Iterable[str], names: Iterable[str]) 
 
 def passed_over(words: str, names: list[str]) -> list[str]:
     """The scene objects the clauses of ``words`` ask the path to pass over, in the order said."""
+    return _passes(words, names)[0]
+
+
+def _passes(words: str, names: list[str]) -> tuple[list[str], str | None]:
+    """The objects to pass over, in order, and the one height above them the words give (or None)."""
     found: list[str] = []
+    heights: set[str] = set()
     for clause in split_clauses(words, names):
         over = OVER_WORDS.search(clause)
         if over is None or NOT_PASSING.search(clause):
             continue
         after = clause[over.end() :]
         listed = LIST_END.split(after)[0]
+        if not any(re.match(rf"\s+(?:the\s+)?{re.escape(n)}\b", after, re.I) for n in names):
+            continue  # "over towards the cup", "over 0.2 away from the box": no object right after
+        height = re.search(rf"(?<![\w.])({NUMBER_TEXT})\s*$", clause[: over.start()])
+        heights |= {height.group(1)} if height else set()
         named = longest_names(names_in(listed, names))
         found += sorted(
             (n for n in named if n not in found), key=lambda n: listed.casefold().find(n.casefold())
         )
-    return found
+    return found, (heights.pop() if len(heights) == 1 else None)
 
 
 def _guessed_step(lines: list[str], wanted: list[str]) -> tuple[int | None, str]:
@@ -114,14 +126,18 @@ def _vague_upward(line: str) -> bool:
     found = assigned_call(line)
     if found is None or found[2] not in UPWARD or direction_argument(found[1]) != "up":
         return False
-    amount = found[1].args[2] if len(found[1].args) > 2 else None
+    given = found[1].args[2:3] + [k.value for k in found[1].keywords if k.arg == "amount"]
+    amount = given[0] if given else None
     return amount is None or (isinstance(amount, ast.Constant) and not isinstance(amount.value, int | float))
 
 
-def _step(t: str, wanted: list[str]) -> str:
-    """The ``pass_over`` step of one object or a list of them, on trajectory variable ``t``."""
+def _step(t: str, wanted: list[str], height: str | None) -> str:
+    """The ``pass_over`` step of one object or a list of them (at a stated height), on variable ``t``."""
     points = [f"detect_objects({name!r})" for name in wanted]
-    return f"{t} = pass_over({t}, {points[0] if len(points) == 1 else '[' + ', '.join(points) + ']'})"
+    clearance = f", {height}" if height else ""
+    return (
+        f"{t} = pass_over({t}, {points[0] if len(points) == 1 else '[' + ', '.join(points) + ']'}{clearance})"
+    )
 
 
 def _listed(wanted: list[str]) -> str:

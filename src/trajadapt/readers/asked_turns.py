@@ -5,7 +5,8 @@ angle it sees in its examples: ``rotate(t, 90)`` for "a quarter turn counter-clo
 above" turned the path the other way. The clause that asks the turn (a verb of turning and a sense
 or a size: ``TURN_VERB``, ``SENSE``, ``SIZE``) gives the angle: its degrees, or a quarter turn (90),
 a half turn (180), a right angle (90); its sense gives the sign ("clockwise" +, "counter-clockwise",
-"anticlockwise" -; "to the left" is counter-clockwise seen from above, "to the right" clockwise).
+"anticlockwise" -; "to the left" is counter-clockwise seen from above, "to the right" clockwise; not
+"about its left end", a place).
 What the clause does not say (the size or the sense) stays as the model wrote it. Only a program with
 one ``rotate`` step, and words with one clause that asks a turn, are read. A review note says what
 changed.
@@ -22,19 +23,20 @@ from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.words import NUMBER_TEXT
 
 TURN_VERB = re.compile(
-    r"\b(?:rotat\w*|turn\w*|tilt\w*|pivot\w*|spin\w*|swivel\w*|twist\w*|yaw\w*|swing\w*|swung|revolv\w*)\b",
+    r"\b(?:rotat\w*|turn\w*|tilt\w*|pivot\w*|spin\w*|swivel\w*|yaw\w*|revolv\w*)\b",
     re.I,
 )
 """Verbs (and nouns) of turning: a clause without one asks no turn ("keep clockwise of the box")."""
 SENSE = re.compile(
     r"\b(?P<against>counter[\s-]?clockwise|anti[\s-]?clockwise|ccw)\b|\b(?P<with>clockwise|cw)\b"
-    r"|\b(?:to\s+(?:the\s+)?|towards?\s+(?:the\s+)?)?(?P<side>left|right)(?:wards?)?\b",
+    r"|\b(?:to|towards?)\s+(?:the\s+)?(?P<side>left|right)\b(?!\s+(?:of|end|side|edge)\b)",
     re.I,
 )
 """The sense of a turn seen from above: against the clock, with it, or towards a side."""
 SIZE = re.compile(
     rf"(?<![\w.])(?P<degrees>{NUMBER_TEXT})\s*(?:°|deg(?:ree)?s?\b)"
-    r"|\b(?P<share>quarter|half|third)[\s-]+(?:(?:of\s+)?an?\s+)?turn\b|\b(?P<right>right)[\s-]+angle\b",
+    r"|(?<!three\s)(?<!three-)\b(?P<share>quarter|half|third)[\s-]+(?:(?:of\s+)?an?\s+)?turn\b"
+    r"|\b(?P<right>right)[\s-]+angle\b",
     re.I,
 )
 """The size of a turn: "30 degrees", "45°", "a quarter turn", "half a turn", "a right angle"."""

@@ -14,7 +14,9 @@ how, and asks neither). When no step bends either way, the asked step takes the 
 whole-path ``shift`` in a direction the words never say ("make the trajectory curvier" came back as
 ``shift(t, 'right', 0.15)``), or is added to a program whose steps only change its pace or pause it
 ("let the path curve out wider, and speed up over the last part" came back as the speed step
-alone). Code that is not made of skill calls alone is left alone. A review note says what changed and why.
+alone), where a clause of its own asks the bend (not "slow down where the path bends more
+sharply"). Code that is not made of skill calls alone is left alone. A review note says what changed
+and why.
 """
 
 from __future__ import annotations
@@ -32,7 +34,9 @@ from trajadapt.code_parse import (
     number_arguments,
     skill_program,
 )
+from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.words import asks_pace
 from trajadapt.skills import SKILL_NAMES
 
 _BENDING = r"(?:curv\w*|bend\w*|arc\w*)"
@@ -54,6 +58,7 @@ ASKED_STEP = {"more": "exaggerate_curve(t)", "less": "exaggerate_curve(t, 0.5)"}
 """For each ask, the step that makes it: less bend is the path drawn halfway towards its start-goal
 line (``smooth`` only rounds off turns and jitter: a path that bends wide keeps its bend), more is
 the path pushed away from it."""
+NEGATED = re.compile(r"\b(?:not|never|no|don't|without)\b|n't\b", re.I)
 TIMING_STEPS = (*SPEED_STEPS, "wait")
 """Steps that change only when the path is travelled: none of them can be the model's bend."""
 SMOOTHING = re.compile(r"\bsmooth\w*|\bjitter\w*|\bjerk\w*", re.I)
@@ -117,5 +122,13 @@ def _bend_where_none_does(lines: list[str], notes: list[str], step: str, ask: st
             return
     if any(called_name(line) in SKILL_NAMES and called_name(line) not in TIMING_STEPS for line in lines):
         return  # a step that moves the path may be the model's bend
+    if any(called_name(line) in TIMING_STEPS for line in lines) and not _a_bend_of_its_own(words):
+        return  # "slow down where the path bends more sharply": the bend says where, not what
     lines.insert(after_last_step(lines, SKILL_NAMES), step)
     notes.append(f"added `{step}`: the words ask the path to bend {ask} and no step does")
+
+
+def _a_bend_of_its_own(words: str) -> bool:
+    """Whether a clause asks the bend with no pace and no negation ("let it curve out wider")."""
+    asking = [c for c in split_clauses(words) if MORE_CURVE.search(c) or LESS_CURVE.search(c)]
+    return any(not asks_pace(c) and not NEGATED.search(c) for c in asking)

@@ -29,9 +29,9 @@ BACK_UP = re.compile(
 RIGHT_AS_STRESS = re.compile(
     r"\b(?<!turn )(?<!turns )(?<!turning )(?<!turned )(?<!veer )(?<!bear )(?<!steer )(?<!swerve )(?<!go )"
     r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"
-    r"right\s+(?=(?:at|by(?!\s+(?:\d|\.\d|zero|one|two|three|four|five|six|seven|eight|nine|ten|a|an|some"
+    r"(?<!\d\s)right\s+(?=(?:at|by(?!\s+(?:\d|\.\d|zero|one|two|three|four|five|six|seven|eight|nine|ten|a|an|some"
     r"|half|about|around|roughly|approximately)\b)|past|next|beside|alongside|through|over|above|below|under|underneath|behind|before"
-    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to|down)\b)",
+    r"|after|there|here|in|into|on|onto|where|when|now|away|around|against|up\s+to|down|from)\b)",
     re.I,
 )
 """"Right" that stresses a place or a time, not the side: "finish right at the vest", "cruise right past

@@ -13,7 +13,7 @@ from trajadapt.readers.words import GOAL, START
 
 _END = (
     r"(start\w*|begin\w*|initial|take[\s-]?off|end|ends|ending|endpoints?|goal|final|destination|both\s+ends"
-    r"|either\s+end|neither\s+end|landing(?=\s+(?:spot|point|pad|place|site|position|zone))|touch[\s-]?down)"
+    r"|either\s+end|landing(?=\s+(?:spot|point|pad|place|site|position|zone))|touch[\s-]?down)"
 )
 _ENDS = (
     rf"(?:both\s+)?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
@@ -82,5 +82,5 @@ def _ends_of(word: str) -> tuple[str, ...]:
     word = word.lower()
     if word.startswith(("start", "begin", "initial", "take")):
         return ("start",)
-    both = word.startswith(("endpoint", "both", "either", "neither")) or word == "ends"
+    both = word.startswith(("endpoint", "both", "either")) or word == "ends"
     return ("start", "goal") if both else ("goal",)

@@ -11,9 +11,10 @@ to come no closer nor past, ``pass_over`` where it says nothing of over or above
 
 The other way round, a clause that asks to come within a stated distance of the one object it names
 ("detour to within about 10 cm of the wall lamp", "swing by the box, within 0.2 of it"; no negation,
-no least distance, no pace) is no clearance: the one ``avoid`` of that object, which keeps the path
-that far away, becomes ``pass_through(t, X)`` (the path then passes the object closer than any
-stated distance), or ``reach(t, X)`` where the path ends there ("come to rest within 0.1 of the
+no least distance, no pace, no keeping near it all along: "go around the lamp, staying within 0.2")
+is no clearance: the one ``avoid`` of that object, which keeps the path that far away, becomes
+``pass_through(t, X)`` (the path then passes the object closer than any stated distance), or
+``reach(t, X)`` where the path ends there ("come to rest within 0.1 of the
 orange": ``object_words.ends_at_the_place``).
 """
 
@@ -39,6 +40,11 @@ COME_WITHIN = re.compile(
     rf"\bwithin\s+(?:(?:about|around|roughly|approximately|some|just)\s+)?{NUMBER_TEXT}\b", re.I
 )
 """A most distance the words state: "within 0.1", "within about 0.2" (lengths are in metres here)."""
+KEEPING_AROUND = re.compile(
+    r"\b(?:around|round|circl\w*|orbit\w*|stay\w*|keep\w*|remain\w*|hold\w*|throughout|whole)\b", re.I
+)
+"""Words of keeping near an object all along ("go around the lamp, staying within 0.2 of it"): a band
+to stay in, not a visit."""
 NEGATION = re.compile(r"\b(?:no|not|never|without|nor|avoid\w*)\b|n't\b", re.I)
 OVER = re.compile(r"\b(?:over|above|on\s+top|overhead|across\s+the\s+top)\b", re.I)
 """Words that ask to pass over an object: there ``pass_over`` keeps its clearance above it."""
@@ -90,13 +96,13 @@ def come_within_stated_reaches(lines: list[str], notes: list[str], words: str, n
         within = COME_WITHIN.search(clause)
         if len(named) != 1 or within is None or asks_pace(clause) or MINIMUM_DISTANCE.search(clause):
             continue
-        if NEGATION.search(clause[: within.start()]):
+        if NEGATION.search(clause[: within.start()]) or KEEPING_AROUND.search(clause):
             continue
         steps = [i for i, x in enumerate(lines) if on_object(call_of(x, ("avoid",)), named[0])]
         if len(steps) != 1:
             continue
-        before = lines[steps[0]].strip()
+        before, t = lines[steps[0]].strip(), lines[steps[0]].split("=")[0].strip()
         skill = "reach" if ends_at_the_place(clause, words) else "pass_through"
-        after = f"t = {skill}(t, detect_objects({named[0]!r}))"
+        after = f"{t} = {skill}({t}, detect_objects({named[0]!r}))"
         lines[steps[0]] = in_place_of(lines[steps[0]], after)
         notes.append(f"`{before}` -> `{after}`: the instruction asks to come {within.group(0)} of {named[0]}")

@@ -53,7 +53,9 @@ from trajadapt.readers.words import (
     PLACE_WORDS,
     SLOWER,
     SPEED_WORDS,
+    asks_distance,
     asks_pace,
+    asks_visit,
     longest_names,
     names_in,
     part_named,
@@ -95,16 +97,30 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     return placed, notes + found + in_part + unpaced
 
 
+PART_UNPLACED = re.compile(
+    r"\b(?:(?:right\s+)?from\s+the\s+(?:very\s+)?(?:start|beginning|outset)|than\s+(?:at|in|near)\s+the\s+\w+"
+    r"|(?:is|are|gets?)\s+reached)\b",
+    re.I,
+)
+"""Words naming a part that place no pace there: "slow down right from the start" (all of it), "slower
+than at the start" (a comparison)."""
+
+
+KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
+"""A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
+
+
 def _paces_at_unpaced_objects(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:
     """``code`` without speed steps placed at an object only clauses of no pace name, beside another.
 
     "Swing out wider around the rocker, run the whole thing at a steady 0.4" came back with
     ``set_speed(t, 0.4)`` and ``scale_speed(t, 0.65, near=rocker)``: the rocker's clause asks a
-    distance, and the pace clause is served by the other speed step.
+    distance (or a visit, a side), and the pace clause is served by the other speed step.
     """
     clauses = split_clauses(words, names)
     paced = {n for c in clauses if asks_pace(c) for n in names_in(c, names)}
-    unpaced_names = {n for c in clauses for n in names_in(c, names)} - paced
+    other_asks = [c for c in clauses if asks_distance(c) or asks_visit(c) or KEEPS_A_SIDE.search(c)]
+    unpaced_names = {n for c in other_asks for n in names_in(c, names)} - paced
     lines = code.splitlines()
     speeds = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
     places = {i: placed_near(call_of(lines[i], PLACED_SPEED_STEPS)) for i in speeds}
@@ -125,7 +141,8 @@ def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[
     """
     paced = [c for c in split_clauses(words, names) if asks_pace(c)]
     whole = len(paced) != 1 or names_in(paced[0], names) or ALL_ALONG.search(paced[0])
-    part = None if whole else part_named(paced[0])
+    part = None if whole else part_named(PART_UNPLACED.sub(" ", paced[0]))
+    part = None if part in ("goal", "destination", "target") else part  # an end is a place, not a part
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, True) is not None]
     if part is None or len(unplaced) != 1 or COMING_TO_REST.search(words):

@@ -177,12 +177,18 @@ def _factor_set_as_a_speed(line: str, words: str) -> str | None:
     value = call.args[1]
     if not isinstance(value, ast.Constant) or not isinstance(value.value, int | float):
         return None
+    if SPEED_UNIT.search(words):
+        return None  # "half a metre a second" is a speed
     digits = [float(n) for n in re.findall(r"\d+\.?\d*|\.\d+", words)]
     stated = {stated_factor(words, faster) for faster in (False, True)} - {None}
     if float(value.value) in digits or not any(abs(float(value.value) - f) <= 1e-6 for f in stated if f):
         return None
     call.func = ast.Name("scale_speed", ast.Load())
     return ast.unparse(tree)
+
+
+SPEED_UNIT = re.compile(r"/\s*s\b|\bper\s+sec\w*|\b(?:a|an|each)\s+second\b|\bmps\b", re.I)
+"""A unit of speed: the number before it is a speed, not a factor."""
 
 
 def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:

@@ -121,11 +121,12 @@ _SPEED_OF = (
 
 
 _TURNING_THE_PACE = (
-    r"(?:(?:ramp|dial|crank|throttl)\w*\s+(?:(?:it|things|everything)\s+)?"
+    r"(?:(?:ramp|dial|crank|throttl)\w*\s+(?:it|things|everything)\s+"
     rf"|(?:ramp|dial|crank|throttl|bring|brought|knock|turn)\w*\s+{SPEED_NOUN}\s+)(?:back\s+)?"
 )
 """A verb that turns a pace up or down ("ramp the speed down", "dial it back down", "crank the pace
-up", "bring the speed down"): with "down" slower, "up" faster ("bring it down" is a height)."""
+up", "bring the speed down"): with "down" slower, "up" faster ("bring it down" is a height, "take the
+ramp down" a place: a speed noun or "it" after the verb)."""
 FASTER = re.compile(
     r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
     r"|sprint\w*|rush\w*|hustl\w*"
@@ -140,7 +141,7 @@ SLOWER = re.compile(
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+eas(?:y|ier)|go(?:es|ing)?\s+(?:easy|easier)"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
     rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF}"
-    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b|\bwind(?:s|ing)?\s+down\b)",
+    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b)",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",

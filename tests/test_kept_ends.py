@@ -47,6 +47,7 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("then finish where you normally would", {"goal"}),
         ("stop where the robot usually stops", {"goal"}),
         ("end where you like", set()),
+        ("neither end is fixed: shift everything left", set()),  # a negation before the end
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

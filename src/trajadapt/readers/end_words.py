@@ -31,7 +31,7 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(
-        rf"\b{_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
+        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
         re.I,
     ),
     re.compile(rf"\bwith\s+{_ENDS}\s+(?:fixed|pinned|unchanged|untouched|in\s+place|locked)", re.I),

@@ -27,6 +27,9 @@ def program(*steps: str) -> str:
         # a least distance stated: the clearance to keep
         ("hurry, and stay at least 0.35 away from the lamp", ("t = scale_speed(t, 1.4)",),
          "t = avoid(t, detect_objects('lamp'), 0.35)"),
+        # an even pace and a move closer in one clause (session 33)
+        ("hold a steady speed of 0.2 while you drift nearer to the lamp", ("t = set_speed(t, 0.2)",),
+         "t = move_closer(t, detect_objects('lamp'))"),
         # a side to stay on (session 28)
         ("rise 0.1, and keep to the left side of the red box all the way", ("t = shift(t, 'up', 0.1)",),
          "t = keep_side(t, 'left', detect_objects('red box'))"),

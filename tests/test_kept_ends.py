@@ -48,6 +48,7 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("stop where the robot usually stops", {"goal"}),
         ("end where you like", set()),
         ("neither end is fixed: shift everything left", set()),  # a negation before the end
+        ("with the start and end positions left unchanged, pull the middle left", {"start", "goal"}),
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

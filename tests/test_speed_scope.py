@@ -249,3 +249,9 @@ def test_a_pace_near_an_object_whose_clause_asks_nothing_else_of_it_stays() -> N
     code = "t = get_trajectory()\nt = scale_speed(t, 1.25)\nt = scale_speed(t, 0.65, near=detect_objects('box'))\nmodified_trajectory = t"
     words = ["be careful around the box, and go a bit faster overall"]
     assert "near=detect_objects('box')" in localize_speed(code, words, NAMES)[0]
+
+
+def test_an_even_pace_said_with_a_move_closer_holds_the_whole_way() -> None:
+    code = "t = get_trajectory()\nt = set_speed(t, 0.2)\nmodified_trajectory = t"
+    words = ["hold a constant velocity of 0.2 as you move nearer to the box"]
+    assert localize_speed(code, words, NAMES) == (code, [])

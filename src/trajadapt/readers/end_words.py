@@ -34,7 +34,11 @@ KEPT_ENDS = (
         rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
         re.I,
     ),
-    re.compile(rf"\bwith\s+{_ENDS}\s+(?:fixed|pinned|unchanged|untouched|in\s+place|locked)", re.I),
+    re.compile(
+        rf"\bwith\s+{_ENDS}\s+(?:(?:left|kept|held|staying|remaining)\s+)?(?:fixed|pinned|unchanged|untouched"
+        r"|in\s+place|locked|as\s+(?:they|it)\s+(?:are|is))",
+        re.I,
+    ),
     re.compile(
         r"\b(?:at|to|on|in|into|for|with|reach\w*|toward\w*|keep\w*|retain\w*|preserv\w*|maintain\w*)\s+"
         rf"(?:the\s+|its\s+|your\s+|their\s+)?(?:same|original|usual|old|planned|intended|existing|normal"

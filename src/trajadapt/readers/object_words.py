@@ -71,7 +71,7 @@ def _clause_ask(clause: str, name: str) -> ObjectAsk | None:
     side = _side(without_names(clause, [name]))
     if side and not CLOSER.search(clause):  # "just right of the bed" asks to come close on that side
         return ObjectAsk(name, "side", clause, side=side)
-    if asks_pace(clause):
+    if asks_pace(clause) and (FASTER.search(clause) or SLOWER.search(clause) or not asks_distance(clause)):
         within = WITHIN.search(clause)
         placed = PLACE_WORDS.search(clause) or within
         if not placed or bool(FASTER.search(clause)) == bool(SLOWER.search(clause)):

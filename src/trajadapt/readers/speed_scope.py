@@ -106,6 +106,10 @@ PART_UNPLACED = re.compile(
 than at the start" (a comparison)."""
 
 
+EVEN_PACE = re.compile(
+    r"\b(?:constant|steady|uniform|even|fixed|unchanging)\s+(?:\w+\s+)?(?:speed|pace|velocity)\b", re.I
+)
+"""An even pace the words state: with a move closer or away in the same clause, it holds the whole way."""
 KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
 """A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
 
@@ -221,6 +225,8 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
     if scoped is None:
         return code, []
     clause, target = scoped
+    if EVEN_PACE.search(clause) and asks_distance(clause):
+        return code, []  # "hold a constant 0.2 as you move nearer to the drake": the whole way, and closer
     parts_said = part_said_for_the_pace(clause, words, names)
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]

@@ -106,8 +106,7 @@ def _passes(words: str, names: list[str]) -> tuple[list[str], str | None]:
 
 def _guessed_step(lines: list[str], wanted: list[str]) -> tuple[int | None, str]:
     """The step that is the model's reading of passing over, and why; (None, '') where none is."""
-    on_them = [i for i, x in enumerate(lines) if set(_objects(call_of(x, GUESSED))) - {""} <= set(wanted)]
-    on_them = [i for i in on_them if _objects(call_of(lines[i], GUESSED))]  # a step on them alone
+    on_them = [i for i, x in enumerate(lines) if _on_them_alone(call_of(x, GUESSED), wanted)]
     if len(on_them) == 1:
         return on_them[0], f"not {called_name(lines[on_them[0]])} of it"
     upward = [i for i, x in enumerate(lines) if _vague_upward(x)]
@@ -116,9 +115,10 @@ def _guessed_step(lines: list[str], wanted: list[str]) -> tuple[int | None, str]
     return None, ""
 
 
-def _objects(call: ast.Call | None) -> list[str]:
-    """The objects a step is on: its point argument's, or any it detects (``keep_side(t, 'up', X)``)."""
-    return [] if call is None else detected_names(call)
+def _on_them_alone(call: ast.Call | None, wanted: list[str]) -> bool:
+    """Whether a step is on some of the objects and no other (any it detects: ``keep_side(t, 'up', X)``)."""
+    objects = set(detected_names(call)) - {""} if call is not None else set()
+    return bool(objects) and objects <= set(wanted)
 
 
 def _vague_upward(line: str) -> bool:

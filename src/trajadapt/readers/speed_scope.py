@@ -69,6 +69,19 @@ ENDS_SAID = {
     "start": re.compile(r"\b(?:start\w*|begin\w*|initial\w*|depart\w*|first|origin)\b", re.I),
 }
 """Words that name each end of the path: where the words say none, a speed placed near it is a guess."""
+PART_UNPLACED = re.compile(
+    r"\b(?:(?:right\s+)?from\s+the\s+(?:very\s+)?(?:start|beginning|outset)|than\s+(?:at|in|near)\s+the\s+\w+"
+    r"|(?:is|are|gets?)\s+reached)\b",
+    re.I,
+)
+"""Words naming a part that place no pace there: "slow down right from the start" (all of it), "slower
+than at the start" (a comparison)."""
+EVEN_PACE = re.compile(
+    r"\b(?:constant|steady|uniform|even|fixed|unchanging)\s+(?:\w+\s+)?(?:speed|pace|velocity)\b", re.I
+)
+"""An even pace the words state: with a move closer or away in the same clause, it holds the whole way."""
+KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
+"""A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
 
 
 def scoped_object(words: str, names: Iterable[str]) -> str | None:
@@ -95,23 +108,6 @@ def localize_speed(code: str, asked: Iterable[str], names: Iterable[str]) -> tup
     placed, in_part = _placed_in_the_named_part(placed, words, list(names))
     placed, unpaced = _paces_at_unpaced_objects(placed, words, list(names))
     return placed, notes + found + in_part + unpaced
-
-
-PART_UNPLACED = re.compile(
-    r"\b(?:(?:right\s+)?from\s+the\s+(?:very\s+)?(?:start|beginning|outset)|than\s+(?:at|in|near)\s+the\s+\w+"
-    r"|(?:is|are|gets?)\s+reached)\b",
-    re.I,
-)
-"""Words naming a part that place no pace there: "slow down right from the start" (all of it), "slower
-than at the start" (a comparison)."""
-
-
-EVEN_PACE = re.compile(
-    r"\b(?:constant|steady|uniform|even|fixed|unchanging)\s+(?:\w+\s+)?(?:speed|pace|velocity)\b", re.I
-)
-"""An even pace the words state: with a move closer or away in the same clause, it holds the whole way."""
-KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
-"""A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
 
 
 def _paces_at_unpaced_objects(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:

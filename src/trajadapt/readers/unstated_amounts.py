@@ -174,14 +174,12 @@ def _factor_set_as_a_speed(line: str, words: str) -> str | None:
     if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
         return None
     tree, call, _ = found
-    value = call.args[1]
-    if not isinstance(value, ast.Constant) or not isinstance(value.value, int | float):
-        return None
-    if SPEED_UNIT.search(words):
+    value = signed_number(call.args[1])
+    if value is None or SPEED_UNIT.search(words):
         return None  # "half a metre a second" is a speed
     digits = [float(n) for n in re.findall(r"\d+\.?\d*|\.\d+", words)]
     stated = {stated_factor(words, faster) for faster in (False, True)} - {None}
-    if float(value.value) in digits or not any(abs(float(value.value) - f) <= 1e-6 for f in stated if f):
+    if value in digits or not any(abs(value - f) <= 1e-6 for f in stated if f):
         return None
     call.func = ast.Name("scale_speed", ast.Load())
     return ast.unparse(tree)

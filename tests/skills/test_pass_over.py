@@ -41,6 +41,20 @@ def test_the_path_passes_above_each_point_and_keeps_its_ends(
         assert off < 0.05
 
 
+@settings(max_examples=30, deadline=None)
+@given(st.floats(0.1, 0.6), st.floats(0.2, 0.8))
+def test_without_a_stated_clearance_a_path_already_higher_keeps_its_height(
+    raised: float, along: float
+) -> None:
+    """ "Raise the whole flight by 30 cm, fly over the keyboard": the pass never pulls the path down."""
+    path = _line()
+    path[:, 2] += raised
+    centre = np.array([along, 0.1 * np.sin(3 * along), 0.0])
+    above, off = _over(pass_over(path, centre), centre)
+    assert above >= raised - 1e-6
+    assert off < 0.05
+
+
 def test_a_stated_clearance_is_the_height_above_the_point() -> None:
     above, off = _over(pass_over(_line(), [0.5, 0.0, 0.0], clearance=0.3), np.array([0.5, 0.0, 0.0]))
     assert above == pytest.approx(0.3, abs=0.03)

@@ -279,15 +279,25 @@ def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceA
     """Bend the path so that it passes over a point or each of a list of points, clearance above it.
 
     Bend the path so that it passes right over each point (horizontally through it, clearance above
-    it; default a tenth of the path's size), e.g. to hop over objects. Start and goal stay.
+    it; default a tenth of the path's size), e.g. to hop over objects. Start and goal stay. Without a
+    stated clearance the pass is never lower than the path already flies there: a path raised
+    before ("raise the whole flight by 30 cm, fly over the keyboard") keeps its height.
     """
     t = as_trajectory(trajectory)
     height = OVER_CLEARANCE * extent(t) if clearance is None else resolve_amount(clearance, t)
     tops = [centre + np.array([0.0, 0.0, height]) for centre in _points(points)]
+    if clearance is None:
+        tops = [_no_lower_than_the_path(t, top) for top in tops]
     for _ in range(OVER_ROUNDS if len(tops) > 1 else 1):  # each bend nudges the others' passes
         for top in tops:
             t = pass_through(t, top)
     return t
+
+
+def _no_lower_than_the_path(t: Array, top: Array) -> Array:
+    """``top`` raised to the height of the waypoint horizontally nearest it, where that is higher."""
+    nearest = int(np.argmin(np.linalg.norm(t[:, :2] - top[:2], axis=1)))
+    return np.array([top[0], top[1], max(float(top[2]), float(t[nearest, 2]))])
 
 
 def _room_to_bend(t: Array, target: Array, k: int) -> int:

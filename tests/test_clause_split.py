@@ -31,6 +31,28 @@ def test_each_request_is_a_clause(words, clauses):
 
 
 @pytest.mark.parametrize(
+    ("words", "clauses"),
+    [
+        (
+            "Give the box more room, at least 15 cm, and lift the end up by 10 cm",
+            ("Give the box more room, at least 15 cm", "lift the end up by 10 cm"),
+        ),
+        ("Move left, roughly half a metre, then slow down", ("Move left, roughly half a metre", "slow down")),
+        ("stay clear of the lamp, 20 cm minimum; hurry", ("stay clear of the lamp, 20 cm minimum", "hurry")),
+        ("turn the path, about 30 degrees, and stop at the chair", ("turn the path, about 30 degrees", "stop at the chair")),
+    ],
+)  # fmt: skip
+def test_a_piece_that_only_gives_an_amount_belongs_to_the_request_before(words, clauses):
+    assert split_clauses(words, NAMES) == clauses
+
+
+def test_a_place_said_with_an_amount_word_is_no_amount():
+    """ "around" is a hedge of an amount and a word of place: with no number it sets the next request."""
+    words = "give it at least 0.12 of clearance. Also, around the lamp, slow to roughly half speed."
+    assert split_clauses(words, NAMES)[-1] == "around the lamp, slow to roughly half speed"
+
+
+@pytest.mark.parametrize(
     "words",
     [
         "pass between the chair and the table",

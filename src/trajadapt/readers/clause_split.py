@@ -266,14 +266,28 @@ def _content_words(piece: str, names: Sequence[str]) -> list[str]:
 def _asks_something(piece: str, names: Sequence[str]) -> bool:
     """Whether a piece is a request of its own.
 
-    It has a word beyond names, filler, directions and amounts, and does not start with a word that
-    qualifies the piece before it (an -ing or -ly word).
+    It has a word beyond names, filler, directions and amounts (``AMOUNT_WORDS``), and does not
+    start with a word that qualifies the piece before it (an -ing or -ly word).
     """
     words = _content_words(piece, names)
     if not [w for w in words if w not in DIRECTION_WORDS]:
         return False
+    if AN_AMOUNT.search(piece) and not [w for w in words if w not in DIRECTION_WORDS | AMOUNT_WORDS]:
+        return False  # "*, at least 15 cm*", "*, roughly half a metre*": the amount of the piece before
     first = piece.split()[0].lower()
     return not (_is_participle(first) or _is_adverb(first))
+
+
+AMOUNT_WORDS = frozenset(
+    "at least most less fewer minimum maximum about around roughly approximately approx some or so no "
+    "under over good full half quarter third cm mm m metre metres meter meters centimetre centimetres "
+    "centimeter centimeters millimetre millimetres millimeter millimeters degree degrees deg".split()
+)
+"""Words of a piece that only gives an amount: a number's unit, its bound and its hedge ("at least
+15 cm", "roughly half a metre", "about 30 degrees"): the amount of the request before it."""
+AN_AMOUNT = re.compile(r"\d|\b(?:half|quarter|third)\b", re.I)
+"""A number or a share: what a piece of amount words must have to be an amount ("around the maraca"
+is a place)."""
 
 
 LY_VERBS = frozenset("fly apply supply rely reply multiply comply".split())

@@ -49,6 +49,13 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("end where you like", set()),
         ("neither end is fixed: shift everything left", set()),  # a negation before the end
         ("with the start and end positions left unchanged, pull the middle left", {"start", "goal"}),
+        # a modal before the keeping verb; "alone" as a state (fresh-p)
+        ("push it forward, but the goal has to stay exactly where it is", {"goal"}),
+        ("the start needs to remain fixed", {"start"}),
+        ("the end point must be kept unchanged", {"goal"}),
+        ("leave the goal alone", {"goal"}),
+        ("the goal should be the lamp", set()),  # a new goal, not a kept one
+        ("neither end has to stay fixed", set()),
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

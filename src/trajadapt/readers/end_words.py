@@ -21,8 +21,13 @@ _ENDS = (
 )
 _STATE = (
     r"(?:(?:exactly|just|precisely|right|firmly|completely|totally|entirely)\s+)?(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
-    r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:it|they)\s+(?:is|are|was|were))"
+    r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:it|they)\s+(?:is|are|was|were)|alone)"
 )
+_MODAL = (
+    r"(?:(?:should|must|will|shall|can|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|ought\s+to)"
+    r"\s+(?:still\s+|also\s+)?)"
+)
+"""A modal before the keeping verb: "the goal *has to* stay", "the start *needs to* remain"."""
 KEPT_ENDS = (
     re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
     re.compile(
@@ -31,7 +36,7 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(
-        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:should\s+|must\s+)?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are))\s+{_STATE}",
+        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+{_MODAL}?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are)|be(?:\s+kept)?)\s+{_STATE}",
         re.I,
     ),
     re.compile(

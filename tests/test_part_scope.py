@@ -29,6 +29,16 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("starting point: nudge it back", PartMove("the start", "back", None)),
         # "there" right after a clause naming the goal is the goal
         ("head for the goal as before; when it's there, drift 0.1 up", PartMove("past the goal", "up", 0.1)),
+        # a stretch of the path (fresh-p): its own shift_part
+        (
+            "push the first half of the path 6 cm forward",
+            PartMove("the first half", "front", 0.06, named="first half"),
+        ),
+        ("lower the second half by 0.1", PartMove("the second half", "down", 0.1, named="second half")),
+        ("drag the middle of the route a bit left", PartMove("the middle", "left", "a bit", named="middle")),
+        # "it" right after a clause whose subject is an end is that end
+        ("the start is out of bounds: move it 1 m to the left", PartMove("the start", "left", 1.0)),
+        ("the goal sits too close to the wall, so pull it back by 0.2", PartMove("the goal", "back", 0.2)),
     ],
 )
 def test_a_clause_that_names_a_part_and_a_direction_asks_to_move_that_part(
@@ -85,6 +95,23 @@ def test_a_whole_path_shift_becomes_a_shift_of_the_start_and_keeps_its_amount() 
 def test_the_step_written_for_the_part_is_replaced(step: str, words: str, expected: str) -> None:
     code, notes = scope_to_parts(CODE.format(step=step), [words])
     assert expected in code.splitlines() and len(notes) == 1
+
+
+@pytest.mark.parametrize(
+    ("steps", "words", "expected"),
+    [
+        ("t = shift(t, 'left', 0.15)\nt = lift_middle(t, 'left')", "bow the middle about 0.15 to the left",
+         ["t = lift_middle(t, 'left', 0.15)"]),
+        ("t = shift(t, 'up', 0.1)\nt = shift_part(t, 'up', 0.1, part='second half')", "raise the second half by 0.1",
+         ["t = shift_part(t, 'up', 0.1, part='second half')"]),
+    ],
+)  # fmt: skip
+def test_a_stretch_already_moved_that_way_loses_the_whole_shift(
+    steps: str, words: str, expected: list[str]
+) -> None:
+    """One clause read twice: a whole-path shift beside the stretch's own move leaves, its amount kept."""
+    code, notes = scope_to_parts(CODE.format(step=steps), [words])
+    assert code.splitlines()[1:-1] == expected and "move only" in notes[0]
 
 
 @pytest.mark.parametrize(

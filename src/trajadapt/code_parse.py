@@ -82,6 +82,14 @@ def direction_argument(call: ast.Call | None) -> str | None:
     return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
 
 
+def part_argument(call: ast.Call) -> str | None:
+    """The part word a ``shift_part`` call names (its fourth argument or ``part=``), if a word."""
+    node = next(
+        (k.value for k in call.keywords if k.arg == "part"), call.args[3] if len(call.args) > 3 else None
+    )
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+
+
 def detected_name(node: ast.expr) -> str | None:
     """The name in ``detect_objects('<name>')``, or None for any other expression.
 

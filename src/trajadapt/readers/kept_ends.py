@@ -21,11 +21,17 @@ Code that is not made of skill calls alone is left alone. A review note says wha
 
 from __future__ import annotations
 
-import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import SPEED_STEPS, after_last_step, assigned_call, called_name, skill_program
+from trajadapt.code_parse import (
+    SPEED_STEPS,
+    after_last_step,
+    assigned_call,
+    called_name,
+    part_argument,
+    skill_program,
+)
 from trajadapt.readers.end_words import kept_ends
 from trajadapt.skills import SKILL_NAMES
 
@@ -133,10 +139,4 @@ def _may_move(line: str, end: str) -> bool:
 def _part(line: str) -> str | None:
     """The part a ``shift_part`` line names (its fourth argument or ``part=``), if a word."""
     found = assigned_call(line)
-    if found is None:
-        return None
-    call = found[1]
-    node = next(
-        (k.value for k in call.keywords if k.arg == "part"), call.args[3] if len(call.args) > 3 else None
-    )
-    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
+    return None if found is None else part_argument(found[1])

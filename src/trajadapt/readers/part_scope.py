@@ -42,6 +42,7 @@ from trajadapt.code_parse import (
     direction_argument,
     in_place_of,
     parse_code,
+    part_argument,
     skill_program,
 )
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
@@ -98,6 +99,8 @@ def scope_to_parts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         if index is None:
             _add_going_on(move, lines, notes)
             continue
+        if move.named and _stretch_read_twice(lines, index, move, amount, notes):
+            continue
         before = lines[index].strip()
         replaced = [f"t = {step}" for step in _against_the_rest(move, lines, index, move.call(amount))]
         lines[index : index + 1] = [in_place_of(lines[index], line) for line in replaced]
@@ -125,6 +128,29 @@ def _whole_shifts_beside_part_moves(lines: list[str], notes: list[str], words: s
                 f"left out `{lines[index].strip()}`: the words move only a part of the path {direction}"
             )
             del lines[index]
+
+
+def _stretch_read_twice(
+    lines: list[str], index: int, move: PartMove, amount: ast.expr | None, notes: list[str]
+) -> bool:
+    """Whether another step already moves the stretch that way: the whole shift is then left out.
+
+    "Bow the middle of the path about 0.15 to the left" came back as ``shift(t, 'left', 0.15)`` and
+    ``lift_middle(t, 'left')``: one clause read twice. The whole shift leaves, and its amount goes to
+    the stretch's own step where that has none.
+    """
+    own = ("lift_middle", "shift_part") if move.named in ("middle", "center") else ("shift_part",)
+    for other, call in _calls(lines, own):
+        same_part = called_name(lines[other]) == "lift_middle" or part_argument(call) == move.named
+        if other == index or direction_argument(call) != move.direction or not same_part:
+            continue
+        if len(call.args) < 3 and amount is not None:
+            call.args.append(amount)
+            lines[other] = in_place_of(lines[other], f"t = {ast.unparse(call)}")
+        notes.append(f"left out `{lines[index].strip()}`: the words move only {move.part} {move.direction}")
+        del lines[index]
+        return True
+    return False
 
 
 def _going_on(call: ast.Call) -> tuple[str | None, str]:

@@ -21,6 +21,7 @@ from trajadapt.readers.words import (
     SPEED_WORDS,
     START,
     intensity_word,
+    part_named,
     whole_count,
 )
 
@@ -41,19 +42,30 @@ AMOUNT_NUMBER = re.compile(
     re.I,
 )
 
+STRETCHES = ("first half", "second half", "middle", "center")
+"""Stretches of the path a clause may move alone ("push the first half 6 cm forward"): a
+``shift_part`` of that stretch. Its ends are the start and the goal (``START``, ``GOAL``)."""
+
 THERE = re.compile(r"\bthere\b", re.I)
 """A word that points back to a place said before."""
+IT = re.compile(r"\bit\b(?!\s*(?:is|'s|was)\b)", re.I)
+"""A word that points back to the thing said before (not "it is": a new statement)."""
+SUBJECT_VERB = re.compile(
+    r"\s*(?:position\s+|point\s+)?(?:is|are|was|sits|lies|seems|looks|feels|should|must|needs)\b", re.I
+)
+"""A verb right after an end that makes it the clause's subject ("the goal *is* too close")."""
 
 
 @dataclass(frozen=True)
 class PartMove:
     """What one clause asks: a part of the path moved in a direction (None: along the final heading)."""
 
-    part: str  # 'the start', 'the goal', 'past the goal' or 'the first N waypoints'
+    part: str  # 'the start', 'the goal', 'past the goal', 'the first N waypoints' or a stretch ('the middle')
     direction: str | None
     amount: float | str | None
     count: int = 0  # for 'first N waypoints'
     goes_on: bool = False  # past the goal: the clause says to go on ("keep going", "another 0.8")
+    named: str = ""  # for a named stretch ('first half', 'second half', 'middle'): its ``PART_WORDS`` key
 
     def call(self, amount: ast.expr | None) -> str:
         """The skill call that makes this move, given the amount the code wrote (None: the clause's own)."""
@@ -67,6 +79,8 @@ class PartMove:
         words = ", ".join(["t", *(a for a in arguments if a is not None)])
         if self.count:
             return f"shift_part({words}, part=(0, {self.count}))"
+        if self.named:
+            return f"shift_part({words}, part={self.named!r})"
         skill = {"the start": "shift_start", "the goal": "shift_goal"}.get(self.part, "extend")
         return f"{skill}({words})"
 
@@ -75,15 +89,27 @@ def part_moves(words: str) -> list[PartMove]:
     """The part moves the clauses of ``words`` ask for (see the module docstring).
 
     "There" in the clause right after one that names the goal is the goal ("don't stop at the goal;
-    once you get there, carry on further").
+    once you get there, carry on further"); "it" in the clause right after one whose subject is an
+    end is that end ("the start is out of bounds: move it 1 m to the left").
     """
-    moves, goal_before = [], False
+    moves, goal_before, subject = [], False, None
     for clause in split_clauses(words):
-        move = _clause_move(THERE.sub("at the goal", clause) if goal_before else clause)
+        said = THERE.sub("at the goal", clause) if goal_before else clause
+        move = _clause_move(IT.sub(f"the {subject}", said) if subject else said)
         goal_before = bool(GOAL.search(clause))
+        subject = _end_as_subject(clause)
         if move is not None:
             moves.append(move)
     return moves
+
+
+def _end_as_subject(clause: str) -> str | None:
+    """The end ('start', 'goal') a clause opens with as its subject ("the start is out of bounds")."""
+    for end, pattern in (("start", START), ("goal", GOAL)):
+        found = pattern.match(clause.strip())
+        if found and SUBJECT_VERB.match(clause.strip()[found.end() :]):
+            return end
+    return None
 
 
 def _clause_move(clause: str) -> PartMove | None:
@@ -102,6 +128,9 @@ def _clause_move(clause: str) -> PartMove | None:
     parts = [p for p, pattern in (("the start", START), ("the goal", GOAL)) if _moved_part(pattern, clause)]
     if count:
         parts.append(f"the first {count} waypoints")
+    named = part_named(clause) if not parts else None
+    if named in STRETCHES:
+        return PartMove(f"the {named}", direction, amount, named=named)
     if len(parts) != 1:
         return None
     return PartMove(parts[0], direction, amount, count)

@@ -88,6 +88,8 @@ def test_an_end_already_moved_that_way_gets_nothing() -> None:
     ("words", "directions"),
     [
         ("wrap up with a gentle finish", set()),
+        ("wrap it up beside the vest, stopping dead there", set()),  # the verb's object between
+        ("finish things up near the lamp", set()),
         ("end up further to the left", {"left"}),
         ("come to rest right at the vest", set()),
         ("sweep right past the lamp", set()),

@@ -36,8 +36,13 @@ RIGHT_AS_STRESS = re.compile(
 )
 """"Right" that stresses a place or a time, not the side: "finish right at the vest", "cruise right past
 the lamp" ("turn right at the lamp", "move right past it", "to the right of" stay the side)."""
-ENDING_UP = re.compile(r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?)\s+up\b", re.I)
-"""Phrasal verbs of finishing: "end up 0.8 further front", "wrap up with a slower finish" ask no up."""
+ENDING_UP = re.compile(
+    r"\b(?:end(?:s|ed|ing)?|wind(?:s|ing)?|wound|wrap(?:s|ped|ping)?|finish(?:es|ed|ing)?)"
+    r"\s+(?:(?:it|things|this|that|everything)\s+)?up\b",
+    re.I,
+)
+"""Phrasal verbs of finishing, with their object or without: "end up 0.8 further front", "wrap up with
+a slower finish", "wrap it up beside the vest" ask no up."""
 TO_AND_FRO = re.compile(
     r"\b(?:back\s+and\s+forth|forth\s+and\s+back|to\s+and\s+fro|side\s+to\s+side|left\s+and\s+right"
     r"|right\s+and\s+left|up\s+and\s+down|down\s+and\s+up)\b",

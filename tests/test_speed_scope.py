@@ -34,6 +34,16 @@ def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
     assert "changes the speed near person, not everywhere" in notes[0]
 
 
+def test_a_speed_another_clause_states_stays_on_the_whole_path() -> None:
+    """ "Drive at 0.3 and go slower near the box": 0.3 is the first clause's, for the whole way."""
+    step = "t = set_speed(t, 0.3)\nt = scale_speed(t, 0.65)"
+    code, _ = localize_speed(CODE.format(step=step), ["drive at 0.3 and go slower near the box"], NAMES)
+    assert code.splitlines()[1:3] == [
+        "t = set_speed(t, 0.3)",
+        "t = scale_speed(t, 0.65, near=detect_objects('box'))",
+    ]
+
+
 @pytest.mark.parametrize(
     "step",
     [

@@ -335,3 +335,32 @@ def test_a_factor_set_as_a_speed_scales_the_speed(instruction: str, step: str, e
 def test_a_speed_the_words_may_give_stays_set(instruction: str, step: str) -> None:
     code, _ = replace_unstated_amounts(START + step + END, [instruction])
     assert steps(code) == [step]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step", "expected"),
+    [
+        ("come in slower over the final stretch", "t = set_speed(t, 0.319, part='end')",
+         "t = scale_speed(t, 0.65, part='end')"),
+        ("a lot quicker near the box", "t = set_speed(t, 1.0, near=detect_objects('box'))",
+         "t = scale_speed(t, 1.6, near=detect_objects('box'))"),
+    ],
+)  # fmt: skip
+def test_a_made_up_speed_where_the_words_ask_a_pace_scales_by_that_pace(
+    instruction: str, step: str, expected: str
+) -> None:
+    code, notes = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [expected] and "the pace its words ask" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("instruction", "step"),
+    [
+        ("slow down to 0.3 at the end", "t = set_speed(t, 0.3, part='end')"),  # the words give it
+        ("hold 0.4 and then speed up", "t = set_speed(t, 0.4)"),
+        ("change the speed near the box", "t = set_speed(t, 0.2, near=detect_objects('box'))"),  # which way?
+    ],
+)
+def test_a_speed_is_kept_where_the_words_give_it_or_ask_no_one_pace(instruction: str, step: str) -> None:
+    code, _ = replace_unstated_amounts(START + step + END, [instruction])
+    assert steps(code) == [step]

@@ -40,6 +40,7 @@ from trajadapt.code_parse import (
     in_place_of,
     near_point,
     placed_near,
+    signed_number,
     sole_speed_profile,
 )
 from trajadapt.model.scene import name_key
@@ -56,9 +57,11 @@ from trajadapt.readers.words import (
     asks_distance,
     asks_pace,
     asks_visit,
+    is_stated,
     longest_names,
     names_in,
     part_named,
+    stated_numbers,
 )
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 
@@ -225,7 +228,11 @@ def _placed_near_the_named_object(code: str, words: str, names: list[str]) -> tu
         return code, []  # "hold a constant 0.2 as you move nearer to the drake": the whole way, and closer
     parts_said = part_said_for_the_pace(clause, words, names)
     lines = code.splitlines()
-    unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, parts_said) is not None]
+    unplaced = [
+        i
+        for i, line in enumerate(lines)
+        if _unplaced_speed_call(line, parts_said) is not None and not _said_elsewhere(line, clause, words)
+    ]
     if not unplaced and not parts_said and not COMING_TO_REST.search(words):
         return _profile_placed(lines, clause, target)
     if len(unplaced) != 1:
@@ -261,6 +268,21 @@ def _profile_placed(lines: list[str], clause: str, target: str) -> tuple[str, li
     lines[index] = in_place_of(lines[index], step)
     note = f"`{before}` -> `{step}`: the instruction changes the speed near {target}, not towards the goal"
     return "\n".join(lines), [note]
+
+
+def _said_elsewhere(line: str, clause: str, words: str) -> bool:
+    """Whether the step's speed is a number another clause states, not the speed clause.
+
+    "Drive at 0.3 and go slower near the bed": ``set_speed(t, 0.3)`` is the first clause's, for the
+    whole path; only the slowing belongs near the bed.
+    """
+    found = assigned_call(line)
+    value = signed_number(found[1].args[1]) if found is not None and found[1].args[1:2] else None
+    return (
+        value is not None
+        and not is_stated(value, stated_numbers(clause))
+        and is_stated(value, stated_numbers(words))
+    )
 
 
 def _unplaced_speed_call(line: str, parts_said: bool) -> tuple[ast.Module, ast.Call] | None:

@@ -72,6 +72,8 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
             used = "the factor the words state" if stated else used
         if changed is None and (scaled := _factor_set_as_a_speed(line, words)):
             changed, what, used = scaled, "speed (it states a factor)", "that factor"
+        if changed is None and (paced := _made_up_speed(line, numbers, words)):
+            changed, what, used = paced, "speed", "the pace its words ask"
         if changed is None and (ramp := _stop_ramp(line, numbers, words)):
             changed, what, used = ramp, "share of the path", "the product's stop ramp"
         if changed is not None and changed != line.strip():
@@ -182,6 +184,26 @@ def _factor_set_as_a_speed(line: str, words: str) -> str | None:
     if value in digits or not any(abs(value - f) <= 1e-6 for f in stated if f):
         return None
     call.func = ast.Name("scale_speed", ast.Load())
+    return ast.unparse(tree)
+
+
+def _made_up_speed(line: str, numbers: list[float], words: str) -> str | None:
+    """``set_speed`` of a speed the words never give, where they ask one pace: ``scale_speed`` of it.
+
+    "Come in slower over the final stretch" came back as ``set_speed(t, 0.319, part='end')``: the
+    path's own speed copied, no slower. The words ask slower (or faster) and no speed, so the step
+    scales the speed by the phrase table's factor for their amount word, in the same place.
+    """
+    found = _skill_call(line)
+    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+        return None
+    tree, call, _ = found
+    value = signed_number(call.args[1])
+    faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
+    if value is None or faster == slower or is_stated(value, numbers):
+        return None
+    call.func = ast.Name("scale_speed", ast.Load())
+    call.args[1] = ast.Constant(speed_factor(words, faster))
     return ast.unparse(tree)
 
 

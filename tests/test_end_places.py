@@ -63,6 +63,38 @@ def test_words_that_ask_no_end_at_one_object(clause: str) -> None:
     assert asked_end(clause, NAMES) is None
 
 
+@pytest.mark.parametrize(
+    ("clause", "before", "place"),
+    [
+        ("end there", "bring the gripper to the lamp", "lamp"),  # the object of the clause before
+        ("head over to the red cup and finish right there", "", "red cup"),  # named in the clause itself
+        ("land there", "fly over to the box", "box"),
+    ],
+)
+def test_an_end_there_is_the_object_named_just_before(clause: str, before: str, place: str) -> None:
+    end = asked_end(clause, NAMES, before)
+    assert end is not None and (end.place, end.skill) == (place, "reach")
+
+
+@pytest.mark.parametrize(
+    ("clause", "before"),
+    [
+        ("end there", "go between the lamp and the box"),  # two objects
+        ("end there", ""),
+        ("coming to rest there", "stop where it passes closest to the box"),  # a rest where the path is
+        ("stop where it passes closest to the box and end there", ""),  # "there" is that spot
+    ],
+)
+def test_an_end_there_with_no_one_object_before_asks_none(clause: str, before: str) -> None:
+    assert asked_end(clause, NAMES, before) is None
+
+
+def test_an_end_there_leaves_the_steps_written_for_that_object() -> None:
+    written = ["t = pass_over(t, detect_objects('lamp'))", "t = scale_speed(t, 0.65, part='end')"]
+    after = steps_after("bring the gripper to the lamp and end there, slower at the end", *written)
+    assert after == ["t = reach(t, detect_objects('lamp'))", "t = scale_speed(t, 0.65, part='end')"]
+
+
 def test_a_missing_end_step_is_added_after_the_moves_and_before_the_speed_steps() -> None:
     steps = steps_after(
         "Bring it closer to the box and conclude at the lamp, slowing down towards the end",

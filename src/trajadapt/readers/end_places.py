@@ -70,6 +70,13 @@ _ENDING = (
 )
 AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
 """An ending verb with a word that puts the end on the object: "finish at", "land on"."""
+THERE_PLACE = re.compile(
+    rf"\b{_NOT_A_NOUN}(?:end|finish|terminat|conclud|land|park|settl)\w*(?:\s+(?:it|things))?(?:\s+up)?"
+    r"\s+(?:(?:right|exactly|just)\s+)?there\b",
+    re.I,
+)
+"""An ending verb with "there": "bring it to the mug and end there", "finish right there" (a rest
+"there", "come to a stop there", rests where the end already is, or where the path passes)."""
 ABOVE_PLACE = re.compile(
     _ENDING + rf"(?:(?:about|roughly|around|approximately|some)\s+)?(?P<amount>{NUMBER_TEXT})?\s*"
     r"(?:(?:directly|right|just|straight|exactly)\s+)?(?:above|over)\b",
@@ -98,7 +105,9 @@ ALTERNATIVE = re.compile(r"\s*,?\s*(?:and|or|&|/)\s", re.I)
 """A second object joined to the first ("at the lamp or the box"): no one place."""
 FINISHING = re.compile(r"\b(?:to\s+(?:finish|end)|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|finally)\b", re.I)
 ONTO = re.compile(
-    r"\b(?<!closer\s)(?<!nearer\s)(?<!close\s)(?<!next\s)(?<!up\s)(?:onto|on\s+to|into|to|at|on)\s+", re.I
+    r"\b(?<!closer\s)(?<!nearer\s)(?<!close\s)(?<!closest\s)(?<!nearest\s)(?<!next\s)(?<!up\s)"
+    r"(?:onto|on\s+to|into|to|at|on)\s+",
+    re.I,
 )
 """A clause that goes onto an object to finish ("bring the gripper down onto the soap to finish",
 "at the end go to the box"): the object is the end."""
@@ -114,10 +123,14 @@ class AskedEnd:
     skill: str  # 'reach' (at the object) or 'stop_at' (where the path passes nearest it)
     at_rest: bool = False  # the words leave the robot at rest there
     above: str = ""  # a height over the object to end at: a number, or 'slightly' ("just above")
+    named_before: str = ""  # for "end there": the clause before that names the object
 
 
-def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
+def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | None:
     """The end place ``clause`` asks, if it asks one (see the module).
+
+    "There" after an ending verb ("and end there") is the one object named just before it, in the
+    clause or in the clause ``before`` it ("bring the gripper to the mug and end there").
 
     >>> asked_end("then wrap up at the red cup", ["cup", "red cup"]).skill
     'reach'
@@ -132,12 +145,26 @@ def asked_end(clause: str, names: list[str]) -> AskedEnd | None:
         if place is not None:
             above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
             return AskedEnd(clause, place, skill, above=above)
+    there = THERE_PLACE.search(clause)
+    if there is not None:
+        inside = _gone_to(clause[: there.start()], names)
+        place = inside or _gone_to(before, names)
+        return (
+            None if place is None else AskedEnd(clause, place, "reach", named_before="" if inside else before)
+        )
     named = NAMED_AS_END.search(clause)
     place = _one_name(named.group("named") or named.group("then"), names) if named else None
     if place is None and FINISHING.search(clause):
         reached = [found for found in ONTO.finditer(clause) if _one_name(clause[found.end() :], names)]
         place = _one_name(clause[reached[0].end() :], names) if len(reached) == 1 else None
     return None if place is None else AskedEnd(clause, place, "reach")
+
+
+def _gone_to(text: str, names: list[str]) -> str | None:
+    """The one object ``text`` goes to ("bring the gripper *to the mug*"; not "closest to the fan")."""
+    named = longest_names(names_in(text, names))
+    gone = [found for found in ONTO.finditer(text) if _one_name(text[found.end() :], names)]
+    return _one_name(text[gone[-1].end() :], names) if len(named) == 1 and gone else None
 
 
 def _one_name(text: str, names: list[str]) -> str | None:
@@ -158,7 +185,13 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     if program is None:
         return code, []
     clauses = [clause for words in asked for clause in split_clauses(words, names)]
-    ends = [end for clause in clauses if (end := asked_end(clause, names)) is not None]
+    read = [
+        asked_end(clause, names, clauses[index - 1] if index else "") for index, clause in enumerate(clauses)
+    ]
+    ends = [end for end in read if end is not None]
+    ends = [
+        end for end in ends if not end.named_before or all(e.place != end.place for e in ends if e is not end)
+    ]
     if len(ends) != 1:
         return code, []
     end, variable = ends[0], program[1]
@@ -183,7 +216,7 @@ def _ended_there(
     lines: list[str], end: AskedEnd, clauses: list[str], variable: str
 ) -> tuple[list[str], list[str]]:
     """``lines`` with the step that ends the path at ``end`` (and less the steps written for it)."""
-    others = " ".join(clause for clause in clauses if clause != end.clause)
+    others = " ".join(clause for clause in clauses if clause not in (end.clause, end.named_before))
     notes: list[str] = []
     if not names_in(others, [end.place]):
         lines, notes = _without_steps_for(lines, end)

@@ -9,7 +9,8 @@ the words:
 - a number said in words with a decimal point ("zero point three", "point two") or with a fraction
   ("one and a half", "2 and a quarter"), or a distance said in words ("by three", "within two of"),
   becomes digits;
-- an object called by one word of its scene name ("the husky" for "Siberian husky", "the remote"
+- an object called by another name of its kind ("the oboe" for "hautbois": ``object_kinds``) or by
+  one word of its scene name ("the husky" for "Siberian husky", "the remote"
   for "remote_controller") is called by its full name, where no other object of the scene has that
   word, and one written with its words joined or split otherwise ("dishwasher" for "dish washer",
   "tin-opener" for "tinopener") as the scene spells it;
@@ -32,6 +33,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 
+from trajadapt.readers.object_kinds import names_by_their_kind
 from trajadapt.readers.words import whole_words
 
 LIST_MARK = re.compile(r"(?:^|(?<=\n))[ \t]*(?:\d{1,2}[.)]|[-*\u2022])[ \t]+|(?<=\s)\d{1,2}\)[ \t]+", re.M)
@@ -137,7 +139,7 @@ def plain_words(words: str, names: Sequence[str], keep: Callable[[str], bool]) -
     'go up by 0.2. walk further from the Siberian husky.'
     """
     plain = _decimals_in_digits(_list_as_sentences(words))
-    plain = _parts_by_their_names(_full_names(plain, names))
+    plain = _parts_by_their_names(_full_names(names_by_their_kind(plain, names), names))
     return _negations_as_asks(plain, keep)
 
 

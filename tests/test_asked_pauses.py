@@ -98,6 +98,16 @@ def test_a_pause_that_points_back_takes_the_place_before() -> None:
     assert [(p.place, p.steps, p.is_object) for p in found] == [("vase", 7, True)]
 
 
+def test_a_wait_at_a_part_nobody_named_goes_to_the_object_the_pause_is_asked_at() -> None:
+    words = ["when it gets alongside the vase, hold still for five waypoints"]
+    code, notes = add_asked_pauses(program("t = wait(t, 'middle', 5)"), words, NAMES)
+    assert code == program("t = wait(t, detect_objects('vase'), 5)") and "at the vase" in notes[0]
+    halfway = ["halfway, by the vase, hold still for five waypoints"]  # the words say the middle too
+    assert add_asked_pauses(program("t = wait(t, 'middle', 5)"), halfway, NAMES)[0] == program(
+        "t = wait(t, 'middle', 5)"
+    )
+
+
 def test_a_stop_that_only_begins_a_pause_leaves_beside_the_wait() -> None:
     code, notes = add_asked_pauses(
         program("t = stop_at(t, t[-2])", "t = wait(t, 'middle', 3)"),

@@ -119,6 +119,7 @@ def add_asked_pauses(code: str, asked: Iterable[str], names: Iterable[str]) -> t
     if not any(called_name(line) == "wait" for line in lines):
         _add_waits(lines, notes, pauses, program[1])
     elif len(pauses) == 1:
+        _placed_as_asked(lines, notes, pauses[0], words)
         _count_as_asked(lines, notes, pauses[0])
     if pauses and not _stops_for_good(words, names, pauses):
         for line in [x for x in lines if called_name(x) == "stop_at"]:
@@ -146,6 +147,35 @@ def _add_waits(lines: list[str], notes: list[str], pauses: list[AskedPause], var
             continue
         lines.insert(after_last_step(lines, SKILL_NAMES), step)
         notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
+
+
+def _placed_as_asked(lines: list[str], notes: list[str], pause: AskedPause, words: str) -> None:
+    """The one ``wait`` at a part the words never name, at the object the pause is asked at.
+
+    "When it gets alongside the ribbed toad, hold still for five waypoints" came back as ``wait(t,
+    'middle', 5)``: the example's place, not the user's.
+    """
+    waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
+    found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
+    if found is None or len(found[1].args) != 3 or not pause.is_object:
+        return
+    tree, call, _ = found
+    place = call.args[1]
+    if not isinstance(place, ast.Constant) or _position_said(str(place.value), words):
+        return
+    before = lines[waits[0]].strip()
+    call.args[1] = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(pause.place)], [])
+    after = ast.unparse(tree)
+    lines[waits[0]] = in_place_of(lines[waits[0]], after)
+    notes.append(
+        f"`{before}` -> `{after}`: the words ask the pause at the {pause.place} ({pause.clause.strip()!r})"
+    )
+
+
+def _position_said(position: str, words: str) -> bool:
+    """Whether the words name the part a ``wait`` position word stands for ('middle': "halfway")."""
+    said = set(whole_words(words).split())
+    return any(said & group for group, code_names in PLACE_GROUPS if position.strip().lower() in code_names)
 
 
 def _count_as_asked(lines: list[str], notes: list[str], pause: AskedPause) -> None:

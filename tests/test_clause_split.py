@@ -46,6 +46,18 @@ def test_a_piece_that_only_gives_an_amount_belongs_to_the_request_before(words, 
     assert split_clauses(words, NAMES) == clauses
 
 
+def test_a_going_on_with_its_amount_and_heading_is_one_clause():
+    words = "Carry on past the current end point, another 10 cm or so straight ahead."
+    assert split_clauses(words, NAMES) == (
+        "Carry on past the current end point, another 10 cm or so straight ahead",
+    )
+
+
+def test_alongside_an_object_sets_the_next_request():
+    words = "When it gets alongside the box, hold still for five waypoints"
+    assert split_clauses(words, NAMES) == (words,)
+
+
 def test_a_place_said_with_an_amount_word_is_no_amount():
     """ "around" is a hedge of an amount and a word of place: with no number it sets the next request."""
     words = "give it at least 0.12 of clearance. Also, around the lamp, slow to roughly half speed."

@@ -272,7 +272,9 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
     words = _content_words(piece, names)
     if not [w for w in words if w not in DIRECTION_WORDS]:
         return False
-    if AN_AMOUNT.search(piece) and not [w for w in words if w not in DIRECTION_WORDS | AMOUNT_WORDS]:
+    if AN_AMOUNT.search(piece) and not [
+        w for w in words if w not in DIRECTION_WORDS | AMOUNT_WORDS | HEADING_WORDS
+    ]:
         return False  # "*, at least 15 cm*", "*, roughly half a metre*": the amount of the piece before
     first = piece.split()[0].lower()
     return not (_is_participle(first) or _is_adverb(first))
@@ -281,10 +283,12 @@ def _asks_something(piece: str, names: Sequence[str]) -> bool:
 AMOUNT_WORDS = frozenset(
     "at least most less fewer minimum maximum about around roughly approximately approx some or so no "
     "under over good full half quarter third cm mm m metre metres meter meters centimetre centimetres "
-    "centimeter centimeters millimetre millimetres millimeter millimeters degree degrees deg".split()
+    "centimeter centimeters millimetre millimetres millimeter millimeters degree degrees deg another extra "
+    "additional".split()
 )
 """Words of a piece that only gives an amount: a number's unit, its bound and its hedge ("at least
-15 cm", "roughly half a metre", "about 30 degrees"): the amount of the request before it."""
+15 cm", "roughly half a metre", "about 30 degrees", "another 10 cm or so straight ahead", with a
+heading: ``HEADING_WORDS``): the amount of the request before it."""
 AN_AMOUNT = re.compile(r"\d|\b(?:half|quarter|third)\b", re.I)
 """A number or a share: what a piece of amount words must have to be an amount ("around the maraca"
 is a place)."""
@@ -328,6 +332,7 @@ SETTING_WORDS = frozenset(
 
 NEARNESS = frozenset(
     "near nearby nearer close closer next proximity vicinity surroundings surrounding within beside "
+    "alongside abreast level "
     "around past pass passes by re are is am get gets come comes".split()
 )
 """Words of a lead-in that says where the next request applies: "whenever you pass near the wolf,"."""

@@ -98,6 +98,7 @@ def test_no_reader_imports_another_reader() -> None:
         "trajadapt.readers.request_words",
         "trajadapt.readers.plain_words",
         "trajadapt.readers.object_kinds",
+        "trajadapt.readers.pointed_objects",
         "trajadapt.readers.object_mentions",
         "trajadapt.readers.paces",
         "trajadapt.readers.clause_amounts",

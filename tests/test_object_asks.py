@@ -62,6 +62,13 @@ def test_unclear_asks_are_left_out(words: str) -> None:
     assert object_asks(words, NAMES) == {}
 
 
+def test_a_way_to_go_and_a_pace_there_ask_the_way() -> None:
+    """A pace is where something happens, not a way to go: the clause asking closer is the ask."""
+    asks = object_asks("go right next to the sofa and slow down as you get close to the sofa", NAMES)
+    assert asks["sofa"].relation == "closer"
+    assert "sofa" not in object_asks("speed up near the sofa, then slow down near the sofa", NAMES)
+
+
 @pytest.mark.parametrize(
     ("step", "words", "expected"),
     [

@@ -64,7 +64,22 @@ def object_asks(words: str, names: Iterable[str]) -> dict[str, ObjectAsk]:
         ask = _clause_ask(clause, named[0]) if len(named) == 1 else None
         if ask is not None:
             asks.setdefault(ask.name, []).append(ask)
-    return {name: found[0] for name, found in asks.items() if len({a.relation for a in found}) == 1}
+    return {name: ask for name, found in asks.items() if (ask := _one_ask(found)) is not None}
+
+
+def _one_ask(found: list[ObjectAsk]) -> ObjectAsk | None:
+    """The one thing asked of an object: the same by every clause, or one way to go with a pace.
+
+    "Go right next to the bed and slow down as you get close to the bed" asks to come closer, and a
+    pace there (a pace is a place's, not a way to go); two ways to go, or two paces, ask nothing.
+    """
+    ways = [ask for ask in found if ask.relation not in PACES]
+    if len({ask.relation for ask in found}) == 1 or len({ask.relation for ask in ways}) == 1:
+        return ways[0] if ways else found[0]
+    return None
+
+
+PACES = ("faster", "slower")
 
 
 def _clause_ask(clause: str, name: str) -> ObjectAsk | None:

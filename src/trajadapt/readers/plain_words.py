@@ -1,6 +1,6 @@
 """The user's words in the plain form the model and the readers read: what they say, said one way.
 
-People write a request in many forms that ask the same thing. Five of them hide what is asked from
+People write a request in many forms that ask the same thing. Six of them hide what is asked from
 a small model and from word-reading code alike, so they are written out once, before anything reads
 the words:
 
@@ -9,6 +9,8 @@ the words:
 - a number said in words with a decimal point ("zero point three", "point two") or with a fraction
   ("one and a half", "2 and a quarter"), or a distance said in words ("by three", "within two of"),
   becomes digits;
+- an object pointed back to with "it" after a word of place ("go slower as you pass by it":
+  ``pointed_objects``) is called by its name;
 - an object called by another name of its kind ("the oboe" for "hautbois": ``object_kinds``) or by
   one word of its scene name ("the husky" for "Siberian husky", "the remote"
   for "remote_controller") is called by its full name, where no other object of the scene has that
@@ -34,6 +36,7 @@ import re
 from collections.abc import Callable, Sequence
 
 from trajadapt.readers.object_kinds import names_by_their_kind
+from trajadapt.readers.pointed_objects import objects_for_it
 from trajadapt.readers.words import whole_words
 
 LIST_MARK = re.compile(r"(?:^|(?<=\n))[ \t]*(?:\d{1,2}[.)]|[-*\u2022])[ \t]+|(?<=\s)\d{1,2}\)[ \t]+", re.M)
@@ -139,7 +142,8 @@ def plain_words(words: str, names: Sequence[str], keep: Callable[[str], bool]) -
     'go up by 0.2. walk further from the Siberian husky.'
     """
     plain = _decimals_in_digits(_list_as_sentences(words))
-    plain = _parts_by_their_names(_full_names(names_by_their_kind(plain, names), names))
+    plain = _full_names(names_by_their_kind(plain, names), names)
+    plain = _parts_by_their_names(objects_for_it(plain, names))
     return _negations_as_asks(plain, keep)
 
 

@@ -56,6 +56,10 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("leave the goal alone", {"goal"}),
         ("the goal should be the lamp", set()),  # a new goal, not a kept one
         ("neither end has to stay fixed", set()),
+        # said without a verb (fresh-q)
+        ("go slower past the fan; goal unchanged", {"goal"}),
+        ("start and end fixed, bow the middle left", {"start", "goal"}),
+        ("move the goal a fixed distance left", set()),
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:

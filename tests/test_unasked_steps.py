@@ -48,6 +48,11 @@ def test_a_step_of_a_topic_never_mentioned_is_left_out(instruction: str, step: s
         ("double the number of waypoints", "t = resample(t, 2 * len(t))"),
         ("wait for 3 waypoints, then use 80 waypoints", "t = resample(t, 80)"),  # a count besides the pause
         ("add a little random noise", "t = add_noise(t)"),
+        # a least distance said as a place not to come within, beside a pace (fresh-q)
+        (
+            "never come within 0.8 of the fan, and go slower near it",
+            "t = avoid(t, detect_objects('fan'), 0.8)",
+        ),
     ],
 )
 def test_a_step_the_words_ask_for_stays(instruction: str, step: str) -> None:

@@ -29,6 +29,11 @@ _MODAL = (
 )
 """A modal before the keeping verb: "the goal *has to* stay", "the start *needs to* remain"."""
 KEPT_ENDS = (
+    re.compile(
+        rf"(?:^|[,;:.(]\s*|\b(?:and|with|but)\s+){_ENDS}\s+(?:(?:left|kept|held)\s+)?"
+        r"(?:unchanged|untouched|fixed|pinned|in\s+place|as\s+(?:is|before))\b",
+        re.I,
+    ),
     re.compile(rf"\b(?:keep\w*|leav\w*|hold\w*|maintain\w*|preserv\w*)\s+{_ENDS}\s+{_STATE}", re.I),
     re.compile(
         rf"\b(?:(?:do\s+not|don't|never|without)\s+(?:chang|mov|alter|touch)\w*|fix\w*|pin\w*)\s+{_ENDS}\b"
@@ -69,7 +74,8 @@ KEPT_ENDS = (
 "don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
 "head to the same endpoint", "on to the usual end spot", "keeping the same start", "then finish
 exactly as before", "finish where you normally would", "leave the start and end points exactly where
-they are", "ending at the same spot", "starting from the same point", "end where it ends now"."""
+they are", "ending at the same spot", "starting from the same point", "end where it ends now", and
+said without a verb: "...; goal unchanged", "start and end fixed"."""
 
 
 def kept_ends(requests: Sequence[str]) -> set[str]:

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.stop_words import COMING_TO_REST, STOPPING
-from trajadapt.readers.words import PAST_THE_GOAL, asks_distance, asks_pace, asks_visit
+from trajadapt.readers.words import MINIMUM_DISTANCE, PAST_THE_GOAL, asks_distance, asks_pace, asks_visit
 
 
 @dataclass(frozen=True)
@@ -185,8 +185,13 @@ TOPICS = (
             "far",
         ),
         only_with="a speed change",
-        also=lambda words: asks_distance(words) or any(asks_visit(c) for c in split_clauses(words)),
-        # "a wider berth", "a tighter gap", "swing by the lamp": the readers' one vocabulary
+        also=lambda words: (
+            asks_distance(words)
+            or MINIMUM_DISTANCE.search(words) is not None
+            or any(asks_visit(c) for c in split_clauses(words))
+        ),
+        # "a wider berth", "a tighter gap", "swing by the lamp", "don't come within 0.8 of": the
+        # readers' one vocabulary
     ),  # fmt: skip
 )
 STATEMENT = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*([A-Za-z_]\w*)\(\s*([A-Za-z_]\w*)\s*[,)]")

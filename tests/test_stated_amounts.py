@@ -24,6 +24,7 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("carry on 1.2 further back", {"back": 1.2}),
         ("raise it 0.3", {"up": 0.3}),  # the thing moved between the verb and its amount
         ("lift the middle by about 0.3", {"up": 0.3}),  # a rough amount is the amount
+        ("raise the whole path about 0.1", {"up": 0.1}),  # a rough amount right after what moves
         ("go left by roughly 0.2, then drop by ~0.1", {"left": 0.2, "down": 0.1}),
         ("lower the entire route 0.05", {"down": 0.05}),
         ("raise it 2 times", {}),  # a count

@@ -68,12 +68,13 @@ DIRECTED_NUMBER = re.compile(
     rf"\bby\s+{_ROUGHLY}?({NUMBER_TEXT})(?![\w.])"
     rf"|(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
     rf"(?:{_DIRECTION_ALTERNATIVES})\b"
-    rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+(?:(?:{_WHAT_MOVES})\s+)?({NUMBER_TEXT})(?![\w.])"
+    rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+(?:(?:{_WHAT_MOVES})\s+)?{_ROUGHLY}?({NUMBER_TEXT})(?![\w.])"
     r"(?!\s*(?:(?:way)?points?|steps?|times?|turns?))",
     re.I,
 )
 """A number given to a direction: "by 0.2", "by about 0.2", "0.2 to the left", "0.2 further left", "0.2
-over to the left", "rise 0.2", "raise the path 0.2" (not "up 3 times" or "left 10 points", which count)."""
+over to the left", "rise 0.2", "raise the path 0.2", "raise the whole path about 0.2" (not "up 3 times"
+or "left 10 points", which count)."""
 
 
 def directed_numbers(clause: str) -> list[float]:

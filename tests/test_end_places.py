@@ -38,6 +38,10 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("the final position should be the box", "box", "reach"),
         ("finish up alongside the chair", "chair", "stop_at"),
         ("wind up close to the lamp", "lamp", "stop_at"),
+        # where the path passes nearest the object (fresh-q)
+        ("end the motion where the arm gets closest to the red cup", "red cup", "stop_at"),
+        ("stop the path where it comes closest to the lamp", "lamp", "stop_at"),
+        ("cut it short at the point where it passes nearest to the box", "box", "stop_at"),
     ],
 )
 def test_an_end_place_is_read_with_the_step_that_makes_it(clause: str, place: str, skill: str) -> None:
@@ -82,11 +86,23 @@ def test_an_end_there_is_the_object_named_just_before(clause: str, before: str, 
         ("end there", "go between the lamp and the box"),  # two objects
         ("end there", ""),
         ("coming to rest there", "stop where it passes closest to the box"),  # a rest where the path is
-        ("stop where it passes closest to the box and end there", ""),  # "there" is that spot
     ],
 )
 def test_an_end_there_with_no_one_object_before_asks_none(clause: str, before: str) -> None:
     assert asked_end(clause, NAMES, before) is None
+
+
+def test_beside_an_end_where_the_path_passes_nearest_a_visit_there_leaves() -> None:
+    """The end is on the path as it was: a pass through the object would move that nearest point."""
+    written = ["t = pass_through(t, detect_objects('cup'))", "t = stop_at(t, detect_objects('cup'))"]
+    after = steps_after("end the motion where the arm gets closest to the cup", *written)
+    assert after == ["t = stop_at(t, detect_objects('cup'))"]
+
+
+def test_a_pause_at_the_end_stays_after_the_stop() -> None:
+    written = ["t = wait(t, detect_objects('lamp'), 3)"]
+    after = steps_after("stop where it comes closest to the lamp and hold still there for 3 steps", *written)
+    assert after == ["t = stop_at(t, detect_objects('lamp'))", "t = wait(t, detect_objects('lamp'), 3)"]
 
 
 def test_an_end_there_leaves_the_steps_written_for_that_object() -> None:

@@ -2,10 +2,10 @@
 
 "Finish at the lamp", "wrap up at the red cup", "land on the mat", "set down at the cycle", "park at
 the box", "make the quill your end point": the path's end goes to the object, ``reach(t, lamp)``.
-"Wind up next to the chair", "end beside the sofa": the path ends where it passes nearest the
-object, ``stop_at(t, chair)`` (as "stop near the stinkhorn" is read). A small model answers such
-words with a step for another job (a side kept, the end part shifted, the object put in a pass over
-a list) or with no step of the object at all.
+"Wind up next to the chair", "end beside the sofa", "stop where it comes closest to the chair": the
+path ends where it passes nearest the object, ``stop_at(t, chair)`` (as "stop near the stinkhorn" is
+read). A small model answers such words with a step for another job (a side kept, the end part
+shifted, the object put in a pass over a list) or with no step of the object at all.
 
 A clause asks an end place (``asked_end``) when an ending verb (a word of coming to rest too: "come
 to a halt", "bring the arm to rest") is followed by a word of place and then by the one scene object
@@ -70,6 +70,14 @@ _ENDING = (
 )
 AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
 """An ending verb with a word that puts the end on the object: "finish at", "land on"."""
+NEAREST_PLACE = re.compile(
+    r"\b(?:stop|end|finish|halt|terminat\w*|cut)\w*\s+(?:(?:the|its|your)\s+)?(?:\w+\s+)?(?:short\s+)?"
+    r"(?:(?:at|in)\s+the\s+(?:point|spot|place|position)\s+)?where\s+(?:it|the\s+\w+(?:\s+\w+)?)\s+"
+    r"(?:gets|comes|passes|is|goes|runs|swings|flies|drives)\s+(?:(?:the|its)\s+)?(?:closest|nearest)\s+to\b",
+    re.I,
+)
+"""An end where the path passes nearest an object: "end the motion where the arm gets closest to",
+"stop the path where it comes closest to", "stop at the spot where it passes closest to"."""
 THERE_PLACE = re.compile(
     rf"\b{_NOT_A_NOUN}(?:end|finish|terminat|conclud|land|park|settl)\w*(?:\s+(?:it|things))?(?:\s+up)?"
     r"\s+(?:(?:right|exactly|just)\s+)?there\b",
@@ -112,6 +120,9 @@ ONTO = re.compile(
 """A clause that goes onto an object to finish ("bring the gripper down onto the soap to finish",
 "at the end go to the box"): the object is the end."""
 MOVES_THE_PATH = frozenset(SKILL_NAMES) - frozenset(SPEED_STEPS)
+VISITS = ("pass_through", "move_closer")
+"""Steps that take the path to an object: beside an end where the path passes nearest it, they move
+that nearest pass (the words place the end on the path as it was)."""
 
 
 @dataclass(frozen=True)
@@ -139,7 +150,13 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
     >>> asked_end("slow down at the end near the box", ["box"]) is None
     True
     """
-    for pattern, skill in ((AT_PLACE, "reach"), (ABOVE_PLACE, "reach"), (BESIDE_PLACE, "stop_at")):
+    places = (
+        (AT_PLACE, "reach"),
+        (ABOVE_PLACE, "reach"),
+        (BESIDE_PLACE, "stop_at"),
+        (NEAREST_PLACE, "stop_at"),
+    )
+    for pattern, skill in places:
         found = pattern.search(clause)
         place = _one_name(clause[found.end() :], names) if found else None
         if place is not None:
@@ -198,6 +215,8 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     notes: list[str] = []
     if not any(_ends_there(line, end) for line in lines):
         lines, notes = _ended_there(lines, end, clauses, variable)
+    elif end.skill == "stop_at" and not names_in(_other_clauses(clauses, end), [end.place]):
+        lines, notes = _without_steps_for(lines, end, VISITS)  # the nearest pass of the path as it was
     raised, step = _raised_end(lines, end, variable) if end.above else (lines, "")
     if raised != lines:
         said = end.clause.strip()
@@ -216,18 +235,24 @@ def _ended_there(
     lines: list[str], end: AskedEnd, clauses: list[str], variable: str
 ) -> tuple[list[str], list[str]]:
     """``lines`` with the step that ends the path at ``end`` (and less the steps written for it)."""
-    others = " ".join(clause for clause in clauses if clause not in (end.clause, end.named_before))
     notes: list[str] = []
-    if not names_in(others, [end.place]):
+    if not names_in(_other_clauses(clauses, end), [end.place]):
         lines, notes = _without_steps_for(lines, end)
     step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
     at = after_last_step(
         lines, SKILL_NAMES if end.skill == "stop_at" else MOVES_THE_PATH
-    )  # a stop stays last
+    )  # a stop stays last, before a pause there (which it would cut off)
+    pauses = [i for i, line in enumerate(lines) if called_name(line) == "wait" and end.place in line]
+    at = min([at, *pauses]) if end.skill == "stop_at" else at
     how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
     return [*lines[:at], step, *lines[at:]], notes
+
+
+def _other_clauses(clauses: list[str], end: AskedEnd) -> str:
+    """The clauses that do not ask the end (nor name its object for an "end there")."""
+    return " ".join(clause for clause in clauses if clause not in (end.clause, end.named_before))
 
 
 def _raised_end(lines: list[str], end: AskedEnd, variable: str) -> tuple[list[str], str]:
@@ -273,14 +298,19 @@ def _ends_there(line: str, end: AskedEnd) -> bool:
     return call is not None and [name.casefold() for name in objects_of(call)] == [end.place.casefold()]
 
 
-def _without_steps_for(lines: list[str], end: AskedEnd) -> tuple[list[str], list[str]]:
-    """``lines`` less the steps on the end's object alone, and less the object in a step's list."""
+def _without_steps_for(
+    lines: list[str], end: AskedEnd, skills: Iterable[str] = SKILL_NAMES
+) -> tuple[list[str], list[str]]:
+    """``lines`` less the steps (of ``skills``) on the end's object alone, and the object in a list.
+
+    A speed step or a pause there ("and hold still there for a few steps") stays.
+    """
     kept: list[str] = []
     notes: list[str] = []
     for line in lines:
-        call = call_of(line, SKILL_NAMES)
+        call = call_of(line, tuple(skills))
         named = [name.casefold() for name in detected_names(call)] if call is not None else []
-        if call is None or end.place.casefold() not in named or called_name(line) in SPEED_STEPS:
+        if call is None or end.place.casefold() not in named or called_name(line) in (*SPEED_STEPS, "wait"):
             kept.append(line)
         elif len(named) == 1 or not isinstance(call.args[1], ast.List | ast.Tuple):
             notes.append(f"left out `{line.strip()}`: the words ask the {end.place} as the path's end")

@@ -34,6 +34,14 @@ def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
     assert "changes the speed near person, not everywhere" in notes[0]
 
 
+def test_a_scaling_placed_at_an_end_only_another_clause_names_goes_where_its_own_clause_says() -> None:
+    """"Halve the speed through the middle, then ease down to a stop by the goal": 0.5 is the middle's."""
+    step = "t = scale_speed(t, 0.5, near=detect_objects('goal'))"
+    words = ["halve the speed through the middle, then ease down to a full stop by the goal"]
+    code, notes = localize_speed(CODE.format(step=step), words, NAMES)
+    assert code.splitlines()[1] == "t = scale_speed(t, 0.5, part='middle')" and "its clause" in notes[0]
+
+
 def test_a_speed_another_clause_states_stays_on_the_whole_path() -> None:
     """ "Drive at 0.3 and go slower near the box": 0.3 is the first clause's, for the whole way."""
     step = "t = set_speed(t, 0.3)\nt = scale_speed(t, 0.65)"

@@ -46,7 +46,7 @@ from trajadapt.code_parse import (
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.object_words import WITHIN
-from trajadapt.readers.paces import asked_factor, part_said_for_the_pace
+from trajadapt.readers.paces import asked_factor, part_said_for_the_pace, stated_factor
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
     ALL_ALONG,
@@ -173,13 +173,14 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         found = assigned_call(line)
         if found is None or found[2] not in PLACED_SPEED_STEPS:
             continue
-        tree, call, _ = found
+        tree, call, name = found
         waypoint = _end_waypoint(call)
         end = waypoint or _end_named(placed_near(call))
-        said = end is not None and ENDS_SAID[end].search(words) is not None
+        own = _stating_clause(call, words) if name == "scale_speed" else None
+        said = end is not None and ENDS_SAID[end].search(own or words) is not None
         if end is None or (said and waypoint is None):
             continue
-        part = part_named(" ".join(c for c in split_clauses(words) if asks_pace(c)))
+        part = part_named(own or " ".join(c for c in split_clauses(words) if asks_pace(c)))
         if said:
             part = part or ("end" if end == "goal" else "start")
         call.args = call.args[:2]  # a place given in order (near, radius, part) goes with the keywords
@@ -189,11 +190,27 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         before, after = line.strip(), ast.unparse(tree)
         lines[index] = in_place_of(line, after)
         where = f"in the {part}" if part else "everywhere"
-        why = (
-            f"a waypoint is no place for a pace near the {end}" if said else f"the words never name the {end}"
+        never = (
+            f"its clause ({own.strip()!r}) never names the {end}"
+            if own
+            else f"the words never name the {end}"
         )
+        why = f"a waypoint is no place for a pace near the {end}" if said else never
         notes.append(f"`{before}` -> `{after}`: {why}; the words change the speed {where}")
     return "\n".join(lines), notes
+
+
+def _stating_clause(call: ast.Call, words: str) -> str | None:
+    """The one clause that states a ``scale_speed``'s factor ("halve the speed through the middle": 0.5).
+
+    That clause places the step: "halve the speed through the middle third, then ease down to a stop
+    by the goal" names the goal only in the other clause.
+    """
+    factor = signed_number(call.args[1]) if len(call.args) > 1 else None
+    if factor is None or factor <= 0 or factor == 1:
+        return None
+    stating = [c for c in split_clauses(words) if stated_factor(c, factor > 1) == factor]
+    return stating[0] if len(stating) == 1 else None
 
 
 def _end_waypoint(call: ast.Call) -> str | None:

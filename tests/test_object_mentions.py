@@ -21,10 +21,18 @@ def test_the_other_name_is_read_as_the_chosen_object():
 
 
 def test_the_readers_keep_the_step_the_other_name_asks():
+    names = ["scabbard", "drum"]  # "sheath" is no name of the scabbard's kind (readers.object_kinds)
+    code = _code("t = move_away(t, detect_objects('scabbard'))")
+    read, notes = read_against_words(code, ["give the sheath a wider berth"], names)
+    assert "move_away(t, detect_objects('scabbard')" in read
+    assert [n.reader for n in notes] == ["object-mentions"]
+
+
+def test_another_name_of_the_objects_kind_is_read_before_the_answer_is():
     code = _code("t = move_away(t, detect_objects('hautbois'))")
     read, notes = read_against_words(code, ["give the oboe a wider berth"], NAMES)
     assert "move_away(t, detect_objects('hautbois')" in read
-    assert [n.reader for n in notes] == ["object-mentions"]
+    assert [n.reader for n in notes] == ["request-words"]  # "the oboe" written as "the hautbois"
 
 
 def test_nothing_is_read_where_the_choice_is_not_one():

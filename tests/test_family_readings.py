@@ -43,6 +43,8 @@ def steps_after(instruction: str, *steps: str) -> list[str]:
         "come to a dead standstill by the end",
         "it should come to a quiet rest",
         "bring the arm to a gentle rest",
+        "ease the speed down to zero as it lands",  # a speed run down to zero (fresh-r)
+        "decelerate to 0 by the goal",
     ],
 )
 def test_a_stop_is_read_in_many_words(words):
@@ -51,7 +53,14 @@ def test_a_stop_is_read_in_many_words(words):
 
 @pytest.mark.parametrize(
     "words",
-    ["go to the stop sign", "apply it to the rest of the path", "start from rest", "get to a rest area"],
+    [
+        "go to the stop sign",
+        "apply it to the rest of the path",
+        "start from rest",
+        "get to a rest area",
+        "lower the end to zero height",
+        "scale the speed to 0.5",
+    ],
 )
 def test_no_stop_where_the_words_only_name_one(words):
     assert not COMING_TO_REST.search(words)

@@ -18,6 +18,8 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("t = shift_part(t, 'right', part='middle')", "hurry in the middle", "t = scale_speed(t, 1.4, part='middle')"),
         ("t = shift(t, 'up')", "a lot slower towards the end", "t = scale_speed(t, 0.45, part='end')"),
         ("t = shift(t, 'up')", "move slower", "t = scale_speed(t, 0.65)"),
+        ("t = shift_goal(t, 'down')", "over the final fifth bring the speed down to a stop",
+         "t = speed_profile(t, 'decelerate', start=0.8)"),  # slowing to a stop: the profile
     ],
 )  # fmt: skip
 def test_the_one_unsaid_shift_becomes_the_asked_step_with_a_note(

@@ -16,13 +16,15 @@ COMING_TO_REST = re.compile(
     r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+(?:a\s+(?:\w+\s+)?)?rest\b(?!\s+(?:area|stop|room|of)\b)"
     r"|(?:until|till)\s+the\s+\w+\s+(?:comes?\s+to|reach(?:es)?|gets?\s+to)\s+(?:a\s+)?(?:\w+\s+)?(?:stop|standstill|halt)\b"
     r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts)"
-    r"|\b(?:end|ends|ending|ended|finish\w*)\s+(?:at|in|with)\s+(?:a\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b)",
+    r"|\b(?:end|ends|ending|ended|finish\w*)\s+(?:at|in|with)\s+(?:a\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"
+    r"|\b(?:(?:speed|velocity|pace)\s+(?:\w+\s+){0,2}?down|slow\w*(?:\s+\w+){0,2}?|decelerat\w*)\s+to\s+(?:zero|nothing"
+    r"|0(?![.\d]))\b)",
     re.I,
 )
 """Words that end a motion at rest: "to a stop", "roll to a gradual stop", "glide to a halt", "to a
 standstill", "until it stops", "come to rest", "come to a complete rest", "bring it to rest", "ends
-at a full stop" (one vocabulary for every reader that reads a stop: the readers of paces, profiles,
-pauses and unasked steps)."""
+at a full stop", "ease the speed down to zero", "slow it to 0" (one vocabulary for every reader that
+reads a stop: the readers of paces, profiles, pauses and unasked steps)."""
 STOPPING = re.compile(
     rf"{COMING_TO_REST.pattern}|\b(?:stop\w*|halt\w*|standstill|stand\w*\s+still|at\s+rest\b|motionless"
     r"|stationary|terminat\w*)",

@@ -12,7 +12,9 @@ becomes that step:
   ``scale_speed`` near that object with the calibrated factor for the clause's words;
 - the words ask for a faster or slower pace in no particular object's place, and the code changes no
   speed -> ``scale_speed`` with the calibrated factor, in the shift's part (``part=``) or the part
-  the words name ("in the middle", "at the start", "towards the end"), else everywhere.
+  the words name ("in the middle", "at the start", "towards the end"), else everywhere; where they
+  slow to a stop ("over the final fifth bring the speed down to a stop"), ``speed_profile(t,
+  'decelerate')`` from the share of the path they close with, else from the product's stop ramp.
 
 When the words ask nothing that no step makes, name no direction and no part or end of the path,
 and another step changes the path or its pace, the one such shift serves no clause and is left out
@@ -44,7 +46,8 @@ from trajadapt.code_parse import (
 )
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.object_words import asked_words, object_asks
-from trajadapt.readers.paces import asked_factor
+from trajadapt.readers.paces import STOP_RAMP_START, asked_factor, closing_share_start
+from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, intensity_word, part_named
 
 SHIFTS = ("shift", "shift_part", "shift_goal", "shift_start")
@@ -113,6 +116,9 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
     if faster == slower or paces:
         return None, ""
+    if slower and COMING_TO_REST.search(words):  # "over the final fifth bring the speed down to a stop"
+        start = closing_share_start(words) or STOP_RAMP_START
+        return f"t = speed_profile(t, 'decelerate', start={start:g})", "it asks to slow to a stop"
     part = _shift_part(lines[index]) or part_named(words)
     where = f", part={part!r}" if part else ""
     step = f"t = scale_speed(t, {asked_factor(words, faster):g}{where})"

@@ -26,6 +26,7 @@ def kept(words: str, step: str) -> list[str]:
         ("don't pass within 0.4 of the lamp", "t = pass_through(t, detect_objects('lamp'))"),
         ("keep 0.4 from the lamp, no closer", "t = move_away(t, detect_objects('lamp'))"),  # a distance kept
         ("stay a full 0.4 away from the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("steer clear of the lamp by 0.4 or more", "t = pass_over(t, detect_objects('lamp'))"),  # fresh-r
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:
@@ -64,6 +65,8 @@ def came_within(words: str, step: str) -> list[str]:
         ("park the robot within 0.2 of the table", "t = reach(t, detect_objects('table'))"),
         ("come to a stop within about 0.1 of the lamp", "t = reach(t, detect_objects('lamp'))"),
         ("finish within 0.1 of the lamp", "t = reach(t, detect_objects('lamp'))"),
+        ("route it past the table, no more than about 0.25 from it", "t = pass_through(t, detect_objects('table'))"),
+        ("swing by the lamp at most 0.2 from it", "t = pass_through(t, detect_objects('lamp'))"),
     ],
 )  # fmt: skip
 def test_a_clearance_where_the_words_ask_to_come_within_a_distance_passes_by(
@@ -71,6 +74,7 @@ def test_a_clearance_where_the_words_ask_to_come_within_a_distance_passes_by(
 ) -> None:
     name = "table" if "table" in words else "lamp"
     assert came_within(words, f"t = avoid(t, detect_objects('{name}'), 0.1)") == [expected]
+    assert came_within(words, f"t = move_closer(t, detect_objects('{name}'), 'a bit')") == [expected]
 
 
 @pytest.mark.parametrize(

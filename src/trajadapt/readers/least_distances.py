@@ -12,7 +12,8 @@ to come no closer nor past, ``pass_over`` where it says nothing of over or above
 The other way round, a clause that asks to come within a stated distance of the one object it names
 ("detour to within about 10 cm of the wall lamp", "swing by the box, within 0.2 of it"; no negation,
 no least distance, no pace, no keeping near it all along: "go around the lamp, staying within 0.2")
-is no clearance: the one ``avoid`` of that object, which keeps the path that far away, becomes
+is no clearance: the one ``avoid`` of that object, which keeps the path that far away (or the one
+``move_closer``, which comes a vague way closer: "past the fan, no more than about 25 cm from it"), becomes
 ``pass_through(t, X)`` (the path then passes the object closer than any stated distance), or
 ``reach(t, X)`` where the path ends there ("come to rest within 0.1 of the
 orange": ``object_words.ends_at_the_place``).
@@ -37,9 +38,14 @@ from trajadapt.readers.words import (
 )
 
 COME_WITHIN = re.compile(
-    rf"\bwithin\s+(?:(?:about|around|roughly|approximately|some|just)\s+)?{NUMBER_TEXT}\b", re.I
+    r"\b(?:within|(?:no|not)\s+(?:more|further|farther)\s+than|at\s+most)\s+"
+    rf"(?:(?:about|around|roughly|approximately|some|just)\s+)?{NUMBER_TEXT}\b",
+    re.I,
 )
-"""A most distance the words state: "within 0.1", "within about 0.2" (lengths are in metres here)."""
+"""A most distance the words state: "within 0.1", "within about 0.2", "no more than about 0.25 from",
+"at most 0.3 from" (lengths are in metres here)."""
+SHORT_OF_A_VISIT = ("avoid", "move_closer")
+"""Steps that keep away from an object, or come a vague way closer: no visit within a distance."""
 KEEPING_AROUND = re.compile(
     r"\b(?:around|round|circl\w*|orbit\w*|stay\w*|keep\w*|remain\w*|hold\w*|throughout|whole)\b", re.I
 )
@@ -98,11 +104,12 @@ def come_within_stated_reaches(lines: list[str], notes: list[str], words: str, n
             continue
         if NEGATION.search(clause[: within.start()]) or KEEPING_AROUND.search(clause):
             continue
-        steps = [i for i, x in enumerate(lines) if on_object(call_of(x, ("avoid",)), named[0])]
+        steps = [i for i, x in enumerate(lines) if on_object(call_of(x, SHORT_OF_A_VISIT), named[0])]
         if len(steps) != 1:
             continue
         before, t = lines[steps[0]].strip(), lines[steps[0]].split("=")[0].strip()
         skill = "reach" if ends_at_the_place(clause, words) else "pass_through"
         after = f"{t} = {skill}({t}, detect_objects({named[0]!r}))"
         lines[steps[0]] = in_place_of(lines[steps[0]], after)
-        notes.append(f"`{before}` -> `{after}`: the instruction asks to come {within.group(0)} of {named[0]}")
+        reach = re.findall(NUMBER_TEXT, within.group(0))[-1]
+        notes.append(f"`{before}` -> `{after}`: the instruction asks to come within {reach} of {named[0]}")

@@ -108,6 +108,15 @@ def test_a_wait_at_a_part_nobody_named_goes_to_the_object_the_pause_is_asked_at(
     )
 
 
+def test_a_brief_stop_is_a_pause_and_the_path_goes_on() -> None:
+    code, _ = add_asked_pauses(
+        program("t = stop_at(t, detect_objects('vase'))"),
+        ["make a brief stop at the vase, then carry on"],
+        NAMES,
+    )
+    assert code == program("t = wait(t, detect_objects('vase'), 10)")
+
+
 def test_a_stop_that_only_begins_a_pause_leaves_beside_the_wait() -> None:
     code, notes = add_asked_pauses(
         program("t = stop_at(t, t[-2])", "t = wait(t, 'middle', 3)"),

@@ -57,10 +57,11 @@ COUNT = re.compile(
 "3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place)."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
-    r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily)\b",
+    r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"
+    r"|an?\s+(?:brief|short|quick|momentary|little)\s+(?:stop|pause|halt|wait|rest|hold|breather))\b",
     re.I,
 )
-"""A pause's length said without a count: "for a while", "for some time", "briefly"."""
+"""A pause's length said without a count: "for a while", "for some time", "briefly", "a brief stop"."""
 SOME_TIME_STEPS = 10
 """The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)

@@ -48,6 +48,10 @@ def test_each_direction_gets_the_one_number_its_clause_gives(words: str, amounts
         ("t = shift(t, 'upwards', 'slightly')", "t = shift(t, 'upwards', 0.5)"),
         ("t = shift_goal(t, 'up')", "t = shift_goal(t, 'up', 0.5)"),
         ("t = lift_middle(t, 'up')", "t = lift_middle(t, 'up', 0.5)"),
+        (
+            "t = shift_part(t, 'up', -0.5, part='middle')",
+            "t = shift_part(t, 'up', 0.5, part='middle')",
+        ),  # a sign slip
     ],
 )
 def test_a_vague_or_missing_amount_becomes_the_stated_one_with_a_note(step: str, expected: str) -> None:
@@ -62,6 +66,7 @@ def test_a_vague_or_missing_amount_becomes_the_stated_one_with_a_note(step: str,
     "step",
     [
         "t = shift(t, 'up', 0.3)",  # a number of its own
+        "t = shift(t, 'up', -0.3)",  # a negative number of its own, not the stated one
         "t = shift(t, 'left', 'slightly')",  # another direction
         "t = shift(t, 'up', 'a bit')\nt = shift_goal(t, 'up')",  # which one?
     ],

@@ -5,9 +5,10 @@ the table": the vague word belongs to another part of the sentence, the user's n
 clause (split by ``clause_split.split_clauses``) with exactly one direction word and exactly one
 number given to a direction (``clause_amounts.direction_amounts``: "by 0.2", "0.2 to the left") gives that
 direction its amount; the one directional step in that direction (``shift``, ``shift_goal``,
-``shift_start``, ``shift_part``; else ``lift_middle``) whose amount is a word or missing gets the number.
-A step with a number of its own keeps it (``unstated_amounts`` judges numbers), and a clause with two
-directions or two numbers is left alone. A number the words give only to another direction ("go a bit higher
+``shift_start``, ``shift_part``; else ``lift_middle``) whose amount is a word or missing (or the
+number negated: ``'back', -0.4`` for "40 cm backward") gets the number. A step with a number of its
+own keeps it (``unstated_amounts`` judges numbers), and a clause with two directions or two numbers
+is left alone. A number the words give only to another direction ("go a bit higher
 through the middle, and after the goal continue 0.1 further back" answered with ``shift(t, 'up',
 0.1)``) is borrowed: the step gets the amount word of its own direction's clause, or the default (a
 step in a direction the words never say is left to the readers of directions: "back up by 1.5"
@@ -22,7 +23,14 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, called_name, direction_argument, in_place_of
+from trajadapt.code_parse import (
+    assigned_call,
+    call_of,
+    called_name,
+    direction_argument,
+    in_place_of,
+    signed_number,
+)
 from trajadapt.readers.clause_amounts import direction_amounts
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
@@ -41,7 +49,9 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
     code, notes = _without_borrowed_numbers(code, words, amounts)
     lines = code.splitlines()
     for direction, amount in amounts.items():
-        vague = [i for i, line in enumerate(lines) if _vague_step(line) == direction]
+        vague = [
+            i for i, line in enumerate(lines) if _vague_step(line) == direction or _sign_slip(line, amount)
+        ]
         shifts = [i for i in vague if called_name(lines[i]) != "lift_middle"]
         vague = shifts or vague  # a bow of the middle takes the amount only where no shift could
         if len(vague) == 1:
@@ -80,6 +90,17 @@ def _given(lines: list[str], index: int, direction: str, amount: float) -> str:
     changed = ast.unparse(tree)
     lines[index] = in_place_of(line, changed)
     return f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
+
+
+def _sign_slip(line: str, amount: float) -> bool:
+    """Whether a directional step gives its direction the stated amount negated (``'back', -0.4``).
+
+    "Shift the middle section 40 cm backward" came back as ``shift_part(t, 'back', -0.4, 'middle')``:
+    the direction word already says which way, so the minus turned the move round.
+    """
+    call = call_of(line, DIRECTIONAL_STEPS)
+    given = call.args[2] if call is not None and len(call.args) > 2 else None
+    return given is not None and signed_number(given) == -amount and amount > 0
 
 
 def _vague_step(line: str) -> str | None:

@@ -42,6 +42,7 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("end the motion where the arm gets closest to the red cup", "red cup", "stop_at"),
         ("stop the path where it comes closest to the lamp", "lamp", "stop_at"),
         ("cut it short at the point where it passes nearest to the box", "box", "stop_at"),
+        ("have the arm stop where it gets nearest to the lamp rather than carrying on", "lamp", "stop_at"),
     ],
 )
 def test_an_end_place_is_read_with_the_step_that_makes_it(clause: str, place: str, skill: str) -> None:
@@ -97,6 +98,12 @@ def test_beside_an_end_where_the_path_passes_nearest_a_visit_there_leaves() -> N
     written = ["t = pass_through(t, detect_objects('cup'))", "t = stop_at(t, detect_objects('cup'))"]
     after = steps_after("end the motion where the arm gets closest to the cup", *written)
     assert after == ["t = stop_at(t, detect_objects('cup'))"]
+
+
+def test_beside_an_end_where_the_path_passes_nearest_a_clearance_of_it_leaves() -> None:
+    written = ["t = avoid(t, detect_objects('lamp'), 0.3)", "t = stop_at(t, detect_objects('lamp'))"]
+    after = steps_after("have the arm stop where it gets nearest to the lamp", *written)
+    assert after == ["t = stop_at(t, detect_objects('lamp'))"]
 
 
 def test_a_pause_at_the_end_stays_after_the_stop() -> None:

@@ -60,10 +60,18 @@ def steps_after(words: str, *steps: str) -> list[str]:
         ("go slower past the fan; goal unchanged", {"goal"}),
         ("start and end fixed, bow the middle left", {"start", "goal"}),
         ("move the goal a fixed distance left", set()),
+        ("the end point stays as is", {"goal"}),
     ],
 )
 def test_the_ends_the_words_keep(words: str, ends: set[str]) -> None:
     assert kept_ends(words.split(". ")) == ends
+
+
+def test_a_stop_beside_a_kept_goal_the_words_never_ask_is_left_out() -> None:
+    written = ("t = stop_at(t, midpoint(detect_objects('start'), detect_objects('goal')))",)
+    assert steps_after("stay above 0.3 through the middle; the end point stays as is", *written) == []
+    asked = ("t = stop_at(t, detect_objects('box'))",)  # a stop the words ask stays (the goal put back)
+    assert asked[0] in steps_after("stop at the box, and keep the goal where it is", *asked)
 
 
 def test_a_step_that_moves_only_a_kept_end_is_left_out() -> None:

@@ -120,9 +120,10 @@ ONTO = re.compile(
 """A clause that goes onto an object to finish ("bring the gripper down onto the soap to finish",
 "at the end go to the box"): the object is the end."""
 MOVES_THE_PATH = frozenset(SKILL_NAMES) - frozenset(SPEED_STEPS)
-VISITS = ("pass_through", "move_closer")
-"""Steps that take the path to an object: beside an end where the path passes nearest it, they move
-that nearest pass (the words place the end on the path as it was)."""
+BESIDE_THE_STOP = tuple(name for name in SKILL_NAMES if name not in ("stop_at", "reach"))
+"""Steps on an object that move the path's nearest pass to it: beside an end where the path passes
+nearest the object (the words place the end on the path as it was), one on that object alone serves
+no clause (a pass through it, a clearance from it)."""
 
 
 @dataclass(frozen=True)
@@ -216,7 +217,7 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     if not any(_ends_there(line, end) for line in lines):
         lines, notes = _ended_there(lines, end, clauses, variable)
     elif end.skill == "stop_at" and not names_in(_other_clauses(clauses, end), [end.place]):
-        lines, notes = _without_steps_for(lines, end, VISITS)  # the nearest pass of the path as it was
+        lines, notes = _without_steps_for(lines, end, BESIDE_THE_STOP)  # the nearest pass as it was
     raised, step = _raised_end(lines, end, variable) if end.above else (lines, "")
     if raised != lines:
         said = end.clause.strip()

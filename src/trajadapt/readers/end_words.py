@@ -21,7 +21,7 @@ _ENDS = (
 )
 _STATE = (
     r"(?:(?:exactly|just|precisely|right|firmly|completely|totally|entirely)\s+)?(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
-    r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:it|they)\s+(?:is|are|was|were)|alone)"
+    r"|where\s+(?:it|they)\s+(?:is|are|was|were)|as\s+(?:(?:it|they)\s+)?(?:is|are|was|were)|alone)"
 )
 _MODAL = (
     r"(?:(?:should|must|will|shall|can|has\s+to|have\s+to|needs?\s+to|is\s+to|are\s+to|ought\s+to)"

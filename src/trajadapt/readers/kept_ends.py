@@ -14,7 +14,8 @@ the endpoints pinned", "don't move the start or the goal"). For each kept end:
   goes on past the goal (``extend``, ``append_segment``) keeps its goal as moved where the words ask
   to go on ("after the goal", "past the end"); where they do not ("then head to the same endpoint",
   "then carry on to the same goal": a going-on towards the kept goal), such a step moves the kept
-  goal and is left out.
+  goal and is left out. A ``stop_at`` beside a kept goal, where the words say no word of stopping, ends
+  the path before it ("the end point stays as is" beside ``stop_at(t, <a midpoint>)``) and is left out.
 
 Code that is not made of skill calls alone is left alone. A review note says what changed and why.
 """
@@ -33,6 +34,7 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.end_words import kept_ends
+from trajadapt.readers.stop_words import STOPPING
 from trajadapt.skills import SKILL_NAMES
 
 OWN_MOVE = {"start": "shift_start", "goal": "shift_goal"}
@@ -108,6 +110,10 @@ def keep_kept_ends(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
         for line in [x for x in lines if called_name(x) in PAST_THE_GOAL]:
             lines.remove(line)
             notes.append(f"left out `{line.strip()}`: the words keep the goal and go on nowhere past it")
+    if "goal" in kept and not any(STOPPING.search(words) for words in asked):
+        for line in [x for x in lines if called_name(x) == "stop_at"]:
+            lines.remove(line)
+            notes.append(f"left out `{line.strip()}`: the words keep the goal and ask no stop before it")
     moving = {end for end in kept if _moves_ends(lines, end)}  # before any end is put back
     for end in sorted(moving):
         step = PUT_BACK[end].format(t=variable)

@@ -59,7 +59,7 @@ def test_alongside_an_object_sets_the_next_request():
 
 
 def test_a_place_said_with_an_amount_word_is_no_amount():
-    """ "around" is a hedge of an amount and a word of place: with no number it sets the next request."""
+    """A hedge that is also a word of place ("around") with no number sets the next request."""
     words = "give it at least 0.12 of clearance. Also, around the lamp, slow to roughly half speed."
     assert split_clauses(words, NAMES)[-1] == "around the lamp, slow to roughly half speed"
 

@@ -35,7 +35,7 @@ def test_an_unplaced_speed_step_gets_the_place_and_a_note() -> None:
 
 
 def test_a_scaling_placed_at_an_end_only_another_clause_names_goes_where_its_own_clause_says() -> None:
-    """"Halve the speed through the middle, then ease down to a stop by the goal": 0.5 is the middle's."""
+    """In "halve the speed through the middle, then ease down to a stop by the goal", 0.5 is the middle's."""
     step = "t = scale_speed(t, 0.5, near=detect_objects('goal'))"
     words = ["halve the speed through the middle, then ease down to a full stop by the goal"]
     code, notes = localize_speed(CODE.format(step=step), words, NAMES)
@@ -43,7 +43,7 @@ def test_a_scaling_placed_at_an_end_only_another_clause_names_goes_where_its_own
 
 
 def test_a_speed_another_clause_states_stays_on_the_whole_path() -> None:
-    """ "Drive at 0.3 and go slower near the box": 0.3 is the first clause's, for the whole way."""
+    """In "drive at 0.3 and go slower near the box", 0.3 is the first clause's, for the whole way."""
     step = "t = set_speed(t, 0.3)\nt = scale_speed(t, 0.65)"
     code, _ = localize_speed(CODE.format(step=step), ["drive at 0.3 and go slower near the box"], NAMES)
     assert code.splitlines()[1:3] == [

@@ -46,7 +46,7 @@ def test_the_path_passes_above_each_point_and_keeps_its_ends(
 def test_without_a_stated_clearance_a_path_already_higher_keeps_its_height(
     raised: float, along: float
 ) -> None:
-    """ "Raise the whole flight by 30 cm, fly over the keyboard": the pass never pulls the path down."""
+    """A raise before the pass ("raise the whole flight by 30 cm, fly over the keyboard") stays."""
     path = _line()
     path[:, 2] += raised
     centre = np.array([along, 0.1 * np.sin(3 * along), 0.0])

@@ -103,7 +103,8 @@ def test_in_the_stage_the_place_comes_before_the_pause_there() -> None:
         "t = append_segment(t, detect_objects('vase'))",
         "t = wait(t, detect_objects('vase'), 10)",
     ]
-    assert [note.reader for note in notes] == ["past-the-goal", "past-the-goal", "asked-pauses"]
+    readers = ["request-words", "past-the-goal", "past-the-goal", "asked-pauses"]  # "above it": the vase
+    assert [note.reader for note in notes] == readers
 
 
 def test_a_pause_at_the_place_stays_and_comes_after_the_segment() -> None:

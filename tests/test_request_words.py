@@ -134,13 +134,18 @@ def test_requests_that_state_no_problem_are_read_as_said(path):
     assert len(openers) == (1 if path.stem == "probe-s" else 0)  # "Hmm, can you go higher?"
 
 
+POINTED_IN_OVITA = {"extended_54": ("hover above it", "hover above the lantern")}
+"""The one OVITA instruction with something to rewrite: an "it" after a word of place (pointed_objects)."""
+
+
 def test_the_original_instructions_are_read_exactly_as_said(ovita_dir):
     """OVITA's own words hold no list, number in words, short name or negated comparison to rewrite."""
     for path in sorted(ovita_dir.rglob("*.json")):
         case = json.loads(path.read_text())
         names = [o["name"] if isinstance(o, dict) else str(o) for o in case.get("objects") or []]
         words = case.get("instruction") or ""
-        assert request_words(words, names) == words, path.stem
+        said, plain = POINTED_IN_OVITA.get(path.stem, ("", ""))
+        assert request_words(words, names) == words.replace(said, plain), path.stem
 
 
 def _opened(words: str) -> set[str]:

@@ -73,10 +73,21 @@ def test_a_dropped_weave_is_added_after_the_moves() -> None:
         ("wiggle along the way", "t = zigzag(t, 0.05, cycles=6)"),
         ("wiggle along the way", "t = shift(t, 'left', 0.1, alternate=5)"),  # a shift in blocks weaves
         ("loop twice", "t = circle_around(t, detect_objects('lamp'))"),
+        (
+            "alternate 0.1 left and right in blocks of 5 points",
+            "t = shift(t, 'left', 0.1)\nt = shift(t, 'right', 0.1)",
+        ),
     ],
 )
 def test_a_shape_a_step_makes_is_left_alone(words: str, step: str) -> None:
     assert add_asked_shapes(program(step), [words], NAMES) == (program(step), [])
+
+
+def test_whole_path_shifts_both_ways_with_no_blocks_weave_nowhere() -> None:
+    """ "Weave side to side a few times" answered right, left, right, left: the shifts cancel out."""
+    steps = ("t = shift(t, 'right', 'slightly')", "t = shift(t, 'left', 'slightly')")
+    code, notes = add_asked_shapes(program(*steps), ["weave side to side a few times"], NAMES)
+    assert code.splitlines()[1:-1] == [*steps, "t = zigzag(t)"] and "weave side to side" in notes[0]
 
 
 def test_code_beyond_the_skills_is_left_alone() -> None:

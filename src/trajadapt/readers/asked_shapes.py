@@ -13,7 +13,8 @@ asks (in its words outside the scene's object names: "the king snake" asks no we
 A clause that undoes a shape ("straighten out the wiggles", "less wavy", "without weaving"), says
 it in a negation, or only speaks of the path as it is asks none. The clause is served when a step
 of that shape is already in the code (shifts weave too: one that alternates in blocks, or shifts
-both ways along one axis, which the alternating-shifts reader reads); otherwise the step is added
+both ways along one axis where the words give the blocks, which the alternating-shifts reader
+reads); otherwise the step is added
 after the last step that moves the path, and a review note says which words asked it. Code that
 is not made of skill calls alone is left alone.
 """
@@ -34,6 +35,7 @@ from trajadapt.code_parse import (
 )
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.direction_words import alternation
 from trajadapt.readers.request_words import is_statement
 from trajadapt.readers.words import longest_names, names_in, whole_count
 from trajadapt.skills import SKILL_NAMES
@@ -116,25 +118,29 @@ def _count(clause: str) -> int | None:
     return ONCE[found.group(2).lower()] if found.group(2) else max(whole_count(found.group(1)), 1)
 
 
-def _weaving_shifts(lines: list[str]) -> bool:
-    """Whether shifts weave already: one alternating in blocks, or shifts both ways along one axis.
+def _weaving_shifts(lines: list[str], words: str) -> bool:
+    """Whether shifts weave already: one alternating in blocks, or shifts both ways in given blocks.
 
-    The alternating-shifts reader (after this one) makes shifts both ways alternate where the words ask it.
+    Shifts both ways along one axis weave where the words give the blocks
+    (``direction_words.alternation``: the alternating-shifts reader, after this one, makes them
+    alternate). Whole-path shifts both ways with no blocks cancel out: "weave side to side a few
+    times" answered right, left, right, left weaves nowhere.
     """
     if any(ALTERNATE.search(line) for line in lines):
         return True
     ways = {direction_argument(call_of(line, ("shift",))) for line in lines}
-    return any(pair <= ways for pair in OPPOSITES)
+    return alternation(words) is not None and any(pair <= ways for pair in OPPOSITES)
 
 
 def add_asked_shapes(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with a step for each shape a clause asks and no step makes (see the module)."""
-    names = list(names)
+    names, asked = list(names), list(asked)
     lines = code.splitlines()
     program = skill_program(lines, SKILL_NAMES, empty=True)
     if program is None:
         return code, []
-    made = {called_name(line) for line in lines} | ({"zigzag"} if _weaving_shifts(lines) else set())
+    weaving = _weaving_shifts(lines, " ".join(asked))
+    made = {called_name(line) for line in lines} | ({"zigzag"} if weaving else set())
     added: list[str] = []
     notes: list[str] = []
     for words in asked:

@@ -10,9 +10,17 @@ from __future__ import annotations
 
 import re
 
-from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS
+from trajadapt.model.geometry import DIRECTION_SYNONYMS, DIRECTION_VERBS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.stop_words import DOWN_TO_REST
-from trajadapt.readers.words import NUMBER_TEXT, OF_DISTANCE, OF_SPEED, PACE_PHRASES, PATH_WORDS, asks_pace
+from trajadapt.readers.words import (
+    NUMBER_TEXT,
+    OF_DISTANCE,
+    OF_SPEED,
+    PACE_PHRASES,
+    PATH_WORDS,
+    asks_pace,
+    whole_count,
+)
 
 _HEIGHT_NOUN = r"(?:\w+\s+){0,3}?(?:altitude|height|elevation)\b"
 MORE_HEIGHT = re.compile(
@@ -131,3 +139,34 @@ def paired_amounts(clause: str) -> dict[str, float]:
     for number, word in PAIRED.findall(clause):
         found.setdefault(DIRECTION_WORDS[word.lower()], set()).add(float(number))
     return {direction: numbers.pop() for direction, numbers in found.items() if len(numbers) == 1}
+
+
+ALTERNATION = re.compile(
+    r"\b(?:alternat\w*|and so on|and so forth|back and forth|every other|switch\w* (?:back|sides?)"
+    r"|(?:continu\w*|keep\w* (?:going|on)|carry\w* on|repeat\w*)\s+"
+    r"(?:like\s+(?:this|that)|(?:in\s+)?(?:this|that|the\s+same)\s+(?:way|pattern|manner)|the\s+pattern))\b",
+    re.I,
+)
+"""Words that say the shifts go on alternating ("and so on", "continue like this", "repeat the
+pattern")."""
+BLOCK = re.compile(
+    r"\b(?:(?:blocks?|groups?|sets?|chunks?|batch(?:es)?|runs?|stretch(?:es)?)\s+of\s+(\w+)"
+    r"|(?:first|next|following)\s+(\w+)\s+(?:way)?points?"
+    r"|(?:way)?points?\s+1\s*(?:-|to|through)\s*(\w+)"
+    r"|every\s+(\w+)\s+(?:way)?points?)\b",
+    re.I,
+)
+"""A block of waypoints: "blocks of 10", "the first 10 points", "waypoints 1-10", "every 10 points"."""
+
+
+def alternation(words: str) -> tuple[str, int] | None:
+    """(the direction said first, the block's waypoints) when the words ask alternating shifts."""
+    if not ALTERNATION.search(words):
+        return None
+    blocks = {whole_count(next(g for g in found.groups() if g)) for found in BLOCK.finditer(words)}
+    blocks.discard(0)
+    spoken = ALTERNATION.sub(" ", words.lower())  # "back and forth" names no direction
+    said = [DIRECTION_WORDS[word] for word in re.findall(r"[a-z]+", spoken) if word in DIRECTION_WORDS]
+    if len(blocks) != 1 or len(set(said)) != 2 or OPPOSITE_DIRECTIONS.get(said[0]) not in said:
+        return None
+    return said[0], blocks.pop()

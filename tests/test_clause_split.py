@@ -53,6 +53,11 @@ def test_a_going_on_with_its_amount_and_heading_is_one_clause():
     )
 
 
+def test_a_piece_ending_on_an_auxiliary_has_its_verb_in_the_next():
+    words = "keep clear of the box; the last stretch should also run slower"
+    assert split_clauses(words, NAMES) == ("keep clear of the box", "the last stretch should also run slower")
+
+
 def test_alongside_an_object_sets_the_next_request():
     words = "When it gets alongside the box, hold still for five waypoints"
     assert split_clauses(words, NAMES) == (words,)

@@ -27,6 +27,7 @@ def kept(words: str, step: str) -> list[str]:
         ("keep 0.4 from the lamp, no closer", "t = move_away(t, detect_objects('lamp'))"),  # a distance kept
         ("stay a full 0.4 away from the lamp", "t = move_away(t, detect_objects('lamp'))"),
         ("steer clear of the lamp by 0.4 or more", "t = pass_over(t, detect_objects('lamp'))"),  # fresh-r
+        ("give the lamp a wider margin, 0.4 minimum", "t = move_away(t, detect_objects('lamp'))"),  # fresh-s
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:
@@ -67,6 +68,8 @@ def came_within(words: str, step: str) -> list[str]:
         ("finish within 0.1 of the lamp", "t = reach(t, detect_objects('lamp'))"),
         ("route it past the table, no more than about 0.25 from it", "t = pass_through(t, detect_objects('table'))"),
         ("swing by the lamp at most 0.2 from it", "t = pass_through(t, detect_objects('lamp'))"),
+        ("bring the path within about 0.04 of the lamp, keeping the start and the goal fixed",
+         "t = pass_through(t, detect_objects('lamp'))"),  # keeping the ends is no band kept
     ],
 )  # fmt: skip
 def test_a_clearance_where_the_words_ask_to_come_within_a_distance_passes_by(

@@ -204,6 +204,7 @@ MINIMUM_DISTANCE = re.compile(
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
     r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of"
     rf"|\bby(?=\s+{NUMBER_TEXT}\s+or\s+(?:more|further|farther|greater)\b)"
+    rf"|(?<![\w.])(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
     rf"|\b(?:keep|stay|remain|hold)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid))?"
     rf"(?=\s+{NUMBER_TEXT}\s+(?:away\s+)?(?:from|off)\b))\s*"
     rf"({NUMBER_TEXT})",
@@ -212,7 +213,8 @@ MINIMUM_DISTANCE = re.compile(
 """A clearance the words state as a least distance: "at least 0.2", "no closer than 0.2", "never
 closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
 between the negation and the comparison), "never come within 0.2", "a minimum clearance of 0.2", "a
-clearance of 0.2", "keep 0.4 from", "stay a full 1 away from", "clear of it by 0.1 or more"."""
+clearance of 0.2", "keep 0.4 from", "stay a full 1 away from", "clear of it by 0.1 or more", "0.15
+minimum", "1.5 at least"."""
 
 
 def whole_words(text: str) -> str:

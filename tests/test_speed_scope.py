@@ -42,6 +42,23 @@ def test_a_scaling_placed_at_an_end_only_another_clause_names_goes_where_its_own
     assert code.splitlines()[1] == "t = scale_speed(t, 0.5, part='middle')" and "its clause" in notes[0]
 
 
+def test_a_pace_said_of_an_end_as_a_stretch_is_that_part() -> None:
+    step = "t = scale_speed(t, 1.4, near=detect_objects('start'))"
+    code, _ = localize_speed(CODE.format(step=step), ["speed up the start"], NAMES)
+    assert code.splitlines()[1] == "t = scale_speed(t, 1.4, part='start')"
+    near = "t = scale_speed(t, 0.65, near=detect_objects('start'))"
+    assert (
+        localize_speed(CODE.format(step=near), ["slow down near the start"], NAMES)[0].splitlines()[1] == near
+    )
+
+
+def test_the_one_pace_at_an_object_no_pace_clause_names_goes_to_the_paced_part() -> None:
+    step = "t = move_away(t, detect_objects('box'))\nt = scale_speed(t, 0.45, near=detect_objects('box'))"
+    words = ["give the box a wider margin; the end should also run slower"]  # the plain words' part
+    code, notes = localize_speed(CODE.format(step=step), words, NAMES)
+    assert "t = scale_speed(t, 0.45, part='end')" in code.splitlines()
+
+
 def test_a_speed_another_clause_states_stays_on_the_whole_path() -> None:
     """In "drive at 0.3 and go slower near the box", 0.3 is the first clause's, for the whole way."""
     step = "t = set_speed(t, 0.3)\nt = scale_speed(t, 0.65)"

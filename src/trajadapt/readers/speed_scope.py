@@ -128,10 +128,37 @@ def _paces_at_unpaced_objects(code: str, words: str, names: list[str]) -> tuple[
     speeds = [i for i, line in enumerate(lines) if called_name(line) in SPEED_STEPS]
     places = {i: placed_near(call_of(lines[i], PLACED_SPEED_STEPS)) for i in speeds}
     unpaced = [i for i in speeds if places[i] in unpaced_names]
+    if len(unpaced) == len(speeds) == 1:
+        return _to_the_paced_part(lines, unpaced[0], clauses, names)
     if not unpaced or len(unpaced) == len(speeds):
         return code, []
     notes = [f"left out `{lines[i].strip()}`: no clause asks a pace near {places[i]}" for i in unpaced]
     return "\n".join(x for i, x in enumerate(lines) if i not in unpaced), notes
+
+
+def _to_the_paced_part(
+    lines: list[str], index: int, clauses: tuple[str, ...], names: list[str]
+) -> tuple[str, list[str]]:
+    """The one speed step, placed at an object no pace clause names, in the part the pace clauses name.
+
+    "Give the marmoset a wider margin; the last stretch should also run slower" came back as
+    ``scale_speed(t, 0.45, near=marmoset)``: the pace is the last stretch's.
+    """
+    paced = " ".join(c for c in clauses if asks_pace(c))
+    part = part_named(PART_UNPLACED.sub(" ", paced))
+    found = assigned_call(lines[index])
+    if part is None or names_in(paced, names) or found is None:
+        return "\n".join(lines), []
+    tree, call, _ = found
+    call.args = call.args[:2]
+    call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
+    call.keywords.append(ast.keyword("part", ast.Constant(part)))
+    before, after = lines[index].strip(), ast.unparse(tree)
+    lines[index] = in_place_of(lines[index], after)
+    note = (
+        f"`{before}` -> `{after}`: no clause asks a pace near that object; the pace clause names the {part}"
+    )
+    return "\n".join(lines), [note]
 
 
 def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[str, list[str]]:
@@ -164,7 +191,8 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
     """Each speed step placed near an end of the path the words never name, placed where they say.
 
     ``scale_speed(t, 1.4, near=detect_objects('goal'))`` for "speed up in the middle": the part the
-    words name (``part='middle'``), else the whole path. A place at the path's own last or first
+    words name (``part='middle'``), else the whole path; where a pace clause names that end as a
+    stretch ("speed up the start"), that stretch. A place at the path's own last or first
     waypoint (``near=t[-1]`` for "pick up the pace over the final stretch") is, where the words name
     that end, the part the pace clause names, else ``'end'`` / ``'start'``.
     """
@@ -178,7 +206,7 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         end = waypoint or _end_named(placed_near(call))
         own = _stating_clause(call, words) if name == "scale_speed" else None
         said = end is not None and ENDS_SAID[end].search(own or words) is not None
-        if end is None or (said and waypoint is None):
+        if end is None or (said and waypoint is None and not _end_as_a_part(end, words)):
             continue
         part = part_named(own or " ".join(c for c in split_clauses(words) if asks_pace(c)))
         if said:
@@ -195,9 +223,31 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
             if own
             else f"the words never name the {end}"
         )
-        why = f"a waypoint is no place for a pace near the {end}" if said else never
+        placed = "a waypoint" if waypoint else f"the {end} point"
+        why = f"{placed} is no place for a pace said of the {end}" if said else never
         notes.append(f"`{before}` -> `{after}`: {why}; the words change the speed {where}")
     return "\n".join(lines), notes
+
+
+END_AS_A_PART = {
+    "start": re.compile(
+        r"(?<!near\s)(?<!around\s)(?<!by\s)(?<!at\s)(?<!to\s)(?<!from\s)(?<!past\s)\bthe\s+(?:start|beginning)\b"
+        r"(?!\s+(?:point|position|pose|location|waypoint))",
+        re.I,
+    ),
+    "goal": re.compile(
+        r"(?<!near\s)(?<!around\s)(?<!by\s)(?<!at\s)(?<!to\s)(?<!from\s)(?<!past\s)\bthe\s+end\b"
+        r"(?!\s+(?:point|position|pose|location|waypoint))",
+        re.I,
+    ),
+}
+"""An end said as a stretch of the path, not a place near which ("speed up the start", "slow the end";
+"the opening section" is read as "the start"; not "near the start", "at the end point")."""
+
+
+def _end_as_a_part(end: str, words: str) -> bool:
+    """Whether a pace clause names the end as a stretch of the path (``END_AS_A_PART``)."""
+    return any(END_AS_A_PART[end].search(c) for c in split_clauses(words) if asks_pace(c))
 
 
 def _stating_clause(call: ast.Call, words: str) -> str | None:

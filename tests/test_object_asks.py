@@ -111,6 +111,11 @@ def test_a_way_to_go_and_a_pace_there_ask_the_way() -> None:
             ["t = move_away(t, detect_objects('sofa'), 'a lot')"],
         ),
         (
+            "t = avoid(t, detect_objects('sofa'), 0.4)",
+            "pass the sofa with at least 1 to spare",
+            ["t = avoid(t, detect_objects('sofa'), 1)"],
+        ),  # a clearance the clause does not state, where it states a least distance: that one
+        (
             "t = move_away(t, detect_objects('sofa'))",
             "keep a minimum separation of 0.4 from the sofa",
             ["t = avoid(t, detect_objects('sofa'), 0.4)"],

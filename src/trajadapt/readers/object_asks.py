@@ -17,7 +17,8 @@ the scene's objects asks one thing of it:
 - closer ("closer", "nearer", "a smaller distance", "approach") or away ("further", "away", "a
   greater distance") -> a step the other way (``move_away`` for closer, ``move_closer`` for away),
   or an ``avoid`` of that one object with a clearance the clause does not state, becomes
-  ``move_closer`` / ``move_away`` with the clause's vague word;
+  ``move_closer`` / ``move_away`` with the clause's vague word (``avoid`` of the least distance the
+  clause states, where it states one: "pass the chair with at least a metre to spare");
 - to pass close by it ("swing by X", "fly close past X", "come close to X") -> the one distance step
   on it (or ``reach`` / ``stop_at`` of it, where the clause does not end there) becomes ``pass_through``.
 
@@ -342,6 +343,9 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
         return None
     if skill == "avoid" and _clearance_stated(call, ask.clause):
         return None
+    least = MINIMUM_DISTANCE.search(ask.clause) if ask.relation == "away" else None
+    if least is not None:  # "pass the chair with at least a metre to spare" answered avoid(..., 0.4)
+        return [f"t = avoid(t, {point}, {least.group(1)})"]
     word = intensity_word(ask.clause)
     amount = f", {word!r}" if word else ""
     return [f"t = {wanted}(t, {point}{amount})"]

@@ -58,7 +58,8 @@ COUNT = re.compile(
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"
-    r"|an?\s+(?:brief|short|quick|momentary|little)\s+(?:stop|pause|halt|wait|rest|hold|breather))\b",
+    r"|an?\s+(?:brief|short|quick|momentary|little)\s+(?:pause|wait|hold|breather)"
+    r"|(?:make|take|have|do)\w*\s+an?\s+(?:brief|short|quick|momentary|little)\s+(?:stop|halt|rest))\b",
     re.I,
 )
 """A pause's length said without a count: "for a while", "for some time", "briefly", "a brief stop"."""

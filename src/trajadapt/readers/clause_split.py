@@ -165,7 +165,7 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
         return False  # "start point: move it left", "the lamp: keep well away from it"
     if joiner.strip() not in ("", ",", ":", "and", "but", "also"):
         return True  # a sentence mark, "then"
-    if joiner.strip().lower() in ("also", "and", "then", "and also") and AUXILIARY_AT_END.search(previous):
+    if joiner.strip().lower() in ("also", "and") and AUXILIARY_AT_END.search(previous):
         return False  # "the last stretch should *also* run slower": the verb of the piece before
     if joiner.strip() == "and" and _second_of_a_pair(previous, piece, names):
         return False  # "the midpoint between the heron *and the spaniel* ..."
@@ -184,11 +184,12 @@ def _starts_a_request(joiner: str, piece: str, previous: str, names: Sequence[st
 
 
 AUXILIARY_AT_END = re.compile(
+    r"(?<!\byou\s)(?<!\bwe\s)(?<!\bi\s)(?<!\bit\s)"
     r"\b(?:should|must|will|shall|can|could|would|may|might|has\s+to|have\s+to|needs?\s+to|ought\s+to)\s*$",
     re.I,
 )
 """A piece that ends on an auxiliary has its verb in the next one ("the end should | also run
-slower"): no request of its own."""
+slower"): no request of its own ("as fast as you can" is one, its verb said before)."""
 
 HEADING_WORDS = frozenset(
     "heading head headed going moving travelling traveling facing pointing pointed aiming aimed toward "

@@ -71,16 +71,19 @@ _ENDING = (
 AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
 """An ending verb with a word that puts the end on the object: "finish at", "land on"."""
 NEAREST_PLACE = re.compile(
-    r"\b(?:stop|end|finish|halt|terminat\w*|cut)\w*\s+(?:(?:the|its|your)\s+)?(?:\w+\s+)?(?:short\s+)?"
+    r"\b(?:(?:stop|end|finish|halt|terminat)\w*(?:\s+(?:it|(?:the|its|your)\s+\w+))?(?:\s+short)?"
+    r"|cut\w*\s+(?:it|(?:the|its|your)\s+\w+)\s+short)\s+"
     r"(?:(?:at|in)\s+the\s+(?:point|spot|place|position)\s+)?where\s+(?:it|the\s+\w+(?:\s+\w+)?)\s+"
     r"(?:gets|comes|passes|is|goes|runs|swings|flies|drives)\s+(?:(?:the|its)\s+)?(?:closest|nearest)\s+to\b",
     re.I,
 )
 """An end where the path passes nearest an object: "end the motion where the arm gets closest to",
 "stop the path where it comes closest to", "stop at the spot where it passes closest to"."""
+NEGATION = re.compile(r"\b(?:not|never|no)\b|n't\b", re.I)
+"""A negation before "end there" ("but don't finish there"): no end there."""
 THERE_PLACE = re.compile(
     rf"\b{_NOT_A_NOUN}(?:end|finish|terminat|conclud|land|park|settl)\w*(?:\s+(?:it|things))?(?:\s+up)?"
-    r"\s+(?:(?:right|exactly|just)\s+)?there\b",
+    r"\s+(?:(?:right|exactly|just)\s+)?there\b(?!\s+for\b)",
     re.I,
 )
 """An ending verb with "there": "bring it to the mug and end there", "finish right there" (a rest
@@ -164,7 +167,7 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
             above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
             return AskedEnd(clause, place, skill, above=above)
     there = THERE_PLACE.search(clause)
-    if there is not None:
+    if there is not None and not NEGATION.search(clause[: there.start()]):
         inside = _gone_to(clause[: there.start()], names)
         place = inside or _gone_to(before, names)
         return (

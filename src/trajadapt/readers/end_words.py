@@ -41,7 +41,7 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(
-        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+{_MODAL}?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are)|be(?:\s+kept)?)\s+{_STATE}",
+        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+{_MODAL}?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are)|be(?:\s+kept)?(?!\s+(?:put|still)\b))\s+{_STATE}",
         re.I,
     ),
     re.compile(

@@ -38,9 +38,11 @@ from trajadapt.readers.words import (
     names_in,
 )
 
+_ROUGHLY = r"(?:(?:about|around|roughly|approximately|some|just)\s+)?"
 COME_WITHIN = re.compile(
-    r"\b(?:within|(?:no|not)\s+(?:more|further|farther)\s+than|at\s+most)\s+"
-    rf"(?:(?:about|around|roughly|approximately|some|just)\s+)?{NUMBER_TEXT}\b",
+    rf"\bwithin\s+{_ROUGHLY}{NUMBER_TEXT}\b"
+    rf"|\b(?:(?:no|not)\s+(?:more|further|farther)\s+than|at\s+most)\s+{_ROUGHLY}{NUMBER_TEXT}\b"
+    r"(?=\s*(?:away\s+)?(?:from|of)\b)",
     re.I,
 )
 """A most distance the words state: "within 0.1", "within about 0.2", "no more than about 0.25 from",

@@ -22,7 +22,8 @@ from trajadapt.readers.words import PART_OR_END, whole_words
 GENERAL_WORDS = frozenset(
     "spot drop head point light site scope scale rule press board mail cell market grand semi sub bar bars "
     "beam bullet coach carriage carrier rig slot switch screen plane pick comfort essence upright tank "
-    "remote wireless cliff coast spike ear hopper killer painter ounce tup chute tandem mole groin".split()
+    "remote wireless cliff coast spike ear hopper killer painter ounce tup chute tandem mole groin spiral "
+    "helix whorl volute loop".split()
 )
 """Names of a kind that are also everyday words of an instruction ("the spot", "the head of the
 path", "the drop"): never read as an object's other name."""

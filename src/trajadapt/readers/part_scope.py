@@ -144,7 +144,7 @@ def _stretch_read_twice(
         same_part = called_name(lines[other]) == "lift_middle" or part_argument(call) == move.named
         if other == index or direction_argument(call) != move.direction or not same_part:
             continue
-        if len(call.args) < 3 and amount is not None:
+        if len(call.args) < 3 and amount is not None and not any(k.arg == "amount" for k in call.keywords):
             call.args.append(amount)
             lines[other] = in_place_of(lines[other], f"t = {ast.unparse(call)}")
         notes.append(f"left out `{lines[index].strip()}`: the words move only {move.part} {move.direction}")

@@ -46,14 +46,23 @@ STRETCHES = ("first half", "second half", "middle", "center")
 """Stretches of the path a clause may move alone ("push the first half 6 cm forward"): a
 ``shift_part`` of that stretch. Its ends are the start and the goal (``START``, ``GOAL``)."""
 
+PLACED_STRETCH = re.compile(
+    r"\b(?:after|before|until|till|from|to|towards?|past|beyond|near|up|ends?\s+up\s+in)\s+(?:the\s+)?$",
+    re.I,
+)
+"""A stretch after these words is a place or a time on the path, not the part that moves."""
+
 THERE = re.compile(r"\bthere\b", re.I)
 """A word that points back to a place said before."""
 IT = re.compile(r"\bit\b(?!\s*(?:is|'s|was)\b)", re.I)
 """A word that points back to the thing said before (not "it is": a new statement)."""
 SUBJECT_VERB = re.compile(
-    r"\s*(?:position\s+|point\s+)?(?:is|are|was|sits|lies|seems|looks|feels|should|must|needs)\b", re.I
+    r"\s*(?:position\s+|point\s+)?(?:is|are|was|sits|lies)\b"
+    r"(?!\s+(?:fine|good|ok|okay|right|correct|kept|fixed|unchanged|the\s+same|where|as\s+it)\b)",
+    re.I,
 )
-"""A verb right after an end that makes it the clause's subject ("the goal *is* too close")."""
+"""A verb right after an end that makes it the clause's subject, saying where it is ("the goal *is* too
+close", "the start *sits* out of bounds"; not "the start is fine", "the goal is kept")."""
 
 
 @dataclass(frozen=True)
@@ -129,11 +138,17 @@ def _clause_move(clause: str) -> PartMove | None:
     if count:
         parts.append(f"the first {count} waypoints")
     named = part_named(clause) if not parts else None
-    if named in STRETCHES:
+    if named in STRETCHES and _moved_stretch(clause, named):
         return PartMove(f"the {named}", direction, amount, named=named)
     if len(parts) != 1:
         return None
     return PartMove(parts[0], direction, amount, count)
+
+
+def _moved_stretch(clause: str, named: str) -> bool:
+    """Whether the clause names the stretch as what moves, not a place ("after the first half")."""
+    found = re.search(rf"\b(?:the\s+)?{named}\b", clause, re.I)
+    return found is not None and not PLACED_STRETCH.search(clause[: found.start()])
 
 
 def _moved_part(pattern: re.Pattern[str], clause: str) -> bool:

@@ -15,7 +15,7 @@ from collections.abc import Sequence
 from trajadapt.readers.words import longest_names, names_in
 
 PLACED_IT = re.compile(
-    r"\b((?:pass(?:es|ing)?\s+)?(?:by|near|past|around|round|beside|alongside|over|above|under|below"
+    r"\b((?:pass(?:es|ing)?\s+)?(?:by|near|past|around|round|beside|alongside|over|above"
     r"|towards?|from|next\s+to|close\s+to|closer\s+to|nearer\s+to|away\s+from|clear\s+of|in\s+front\s+of"
     r"|behind)\s+)it\b(?!\s*(?:is|was|'s)\b)",
     re.I,

@@ -344,7 +344,9 @@ def _said_elsewhere(line: str, clause: str, words: str) -> bool:
     whole path; only the slowing belongs near the bed.
     """
     found = assigned_call(line)
-    value = signed_number(found[1].args[1]) if found is not None and found[1].args[1:2] else None
+    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+        return False  # a factor is no speed another clause states
+    value = signed_number(found[1].args[1])
     return (
         value is not None
         and not is_stated(value, stated_numbers(clause))

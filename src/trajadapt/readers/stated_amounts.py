@@ -50,7 +50,9 @@ def use_stated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]
     lines = code.splitlines()
     for direction, amount in amounts.items():
         vague = [
-            i for i, line in enumerate(lines) if _vague_step(line) == direction or _sign_slip(line, amount)
+            i
+            for i, line in enumerate(lines)
+            if _vague_step(line) == direction or _sign_slip(line, direction, amount)
         ]
         shifts = [i for i in vague if called_name(lines[i]) != "lift_middle"]
         vague = shifts or vague  # a bow of the middle takes the amount only where no shift could
@@ -92,7 +94,7 @@ def _given(lines: list[str], index: int, direction: str, amount: float) -> str:
     return f"`{line.strip()}` -> `{changed}`: the instruction gives {direction} the amount {amount:g}"
 
 
-def _sign_slip(line: str, amount: float) -> bool:
+def _sign_slip(line: str, direction: str, amount: float) -> bool:
     """Whether a directional step gives its direction the stated amount negated (``'back', -0.4``).
 
     "Shift the middle section 40 cm backward" came back as ``shift_part(t, 'back', -0.4, 'middle')``:
@@ -100,7 +102,8 @@ def _sign_slip(line: str, amount: float) -> bool:
     """
     call = call_of(line, DIRECTIONAL_STEPS)
     given = call.args[2] if call is not None and len(call.args) > 2 else None
-    return given is not None and signed_number(given) == -amount and amount > 0
+    stated_way = direction_argument(call) == direction  # "lower by 0.1" as shift(t, 'up', -0.1) is right
+    return given is not None and stated_way and signed_number(given) == -amount and amount > 0
 
 
 def _vague_step(line: str) -> str | None:

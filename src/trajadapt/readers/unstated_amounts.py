@@ -200,8 +200,8 @@ def _made_up_speed(line: str, numbers: list[float], words: str) -> str | None:
     tree, call, _ = found
     value = signed_number(call.args[1])
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
-    if value is None or faster == slower or is_stated(value, numbers):
-        return None
+    if value is None or value == 0 or faster == slower or is_stated(value, numbers):
+        return None  # 0: a halt there, no pace
     call.func = ast.Name("scale_speed", ast.Load())
     call.args[1] = ast.Constant(speed_factor(words, faster))
     return ast.unparse(tree)

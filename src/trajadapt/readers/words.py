@@ -203,8 +203,9 @@ MINIMUM_DISTANCE = re.compile(
     r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
     r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of"
-    rf"|\bby(?=\s+{NUMBER_TEXT}\s+or\s+(?:more|further|farther|greater)\b)"
-    rf"|(?<![\w.])(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
+    rf"|\bclear\s+of\s+(?:[\w-]+\s+){{1,5}}?by(?=\s+{NUMBER_TEXT}\s+or\s+(?:more|further|farther|greater)\b)"
+    r"|\b(?:berth|margin|clearance|gap|room|buffer|space|distance)\W+"
+    rf"(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
     rf"|\b(?:keep|stay|remain|hold)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid))?"
     rf"(?=\s+{NUMBER_TEXT}\s+(?:away\s+)?(?:from|off)\b))\s*"
     rf"({NUMBER_TEXT})",

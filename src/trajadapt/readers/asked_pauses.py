@@ -151,24 +151,32 @@ def _add_waits(lines: list[str], notes: list[str], pauses: list[AskedPause], var
         notes.append(f"added `{step}`: the words ask a pause ({said!r}) and no step pauses")
 
 
+def _one_wait(lines: list[str]) -> tuple[int, ast.Module, ast.Call] | None:
+    """The code's one ``wait`` written with place and count in order: its line, parsed line and call."""
+    waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
+    found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
+    if found is None or len(found[1].args) != 3:
+        return None
+    return waits[0], found[0], found[1]
+
+
 def _placed_as_asked(lines: list[str], notes: list[str], pause: AskedPause, words: str) -> None:
     """The one ``wait`` at a part the words never name, at the object the pause is asked at.
 
     "When it gets alongside the ribbed toad, hold still for five waypoints" came back as ``wait(t,
     'middle', 5)``: the example's place, not the user's.
     """
-    waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
-    found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
-    if found is None or len(found[1].args) != 3 or not pause.is_object:
+    found = _one_wait(lines)
+    if found is None or not pause.is_object:
         return
-    tree, call, _ = found
+    index, tree, call = found
     place = call.args[1]
     if not isinstance(place, ast.Constant) or _position_said(str(place.value), words):
         return
-    before = lines[waits[0]].strip()
+    before = lines[index].strip()
     call.args[1] = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(pause.place)], [])
     after = ast.unparse(tree)
-    lines[waits[0]] = in_place_of(lines[waits[0]], after)
+    lines[index] = in_place_of(lines[index], after)
     notes.append(
         f"`{before}` -> `{after}`: the words ask the pause at the {pause.place} ({pause.clause.strip()!r})"
     )
@@ -186,20 +194,19 @@ def _count_as_asked(lines: list[str], notes: list[str], pause: AskedPause) -> No
     A length said without a count ("briefly", "for a moment") corrects only a wait shorter than 2
     steps: a model's 5 for "pause briefly" is a reading of its own, not a mistake.
     """
-    waits = [index for index, line in enumerate(lines) if called_name(line) == "wait"]
-    found = assigned_call(lines[waits[0]]) if len(waits) == 1 else None
-    if found is None or len(found[1].args) != 3 or not _waits_at(found[1].args[1], pause):
+    found = _one_wait(lines)
+    if found is None or not _waits_at(found[2].args[1], pause):
         return
-    tree, call, _ = found
+    index, tree, call = found
     count = call.args[2]
     if not isinstance(count, ast.Constant) or type(count.value) is not int or count.value == pause.steps:
         return
     if COUNT.search(pause.clause) is None and count.value >= 2:
         return
-    before = lines[waits[0]].strip()
+    before = lines[index].strip()
     call.args[2] = ast.Constant(pause.steps)
     after = ast.unparse(tree)
-    lines[waits[0]] = in_place_of(lines[waits[0]], after)
+    lines[index] = in_place_of(lines[index], after)
     notes.append(
         f"`{before}` -> `{after}`: the words ask a pause of {pause.steps} timesteps "
         f"({pause.clause.strip()!r})"

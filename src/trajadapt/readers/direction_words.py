@@ -72,10 +72,13 @@ DIRECTION_WORDS = {**DIRECTION_VERBS, **DIRECTION_SYNONYMS}
 _DIRECTION_ALTERNATIVES = "|".join(sorted(DIRECTION_WORDS, key=len, reverse=True))
 _ROUGHLY = r"(?:(?:about|around|roughly|approximately|approx\.?|some|nearly|almost)\s+|~\s*)"
 _WHAT_MOVES = r"it|everything|(?:the\s+)?(?:whole\s+|entire\s+)?(?:path|route|trajectory)"
+_NUMBER_BEFORE_DIRECTION = (
+    rf"(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
+)
+"""A number right before its direction word, the word left to follow: "0.1 further ", "0.2 to the "."""
 DIRECTED_NUMBER = re.compile(
     rf"\bby\s+{_ROUGHLY}?({NUMBER_TEXT})(?![\w.])"
-    rf"|(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
-    rf"(?:{_DIRECTION_ALTERNATIVES})\b"
+    rf"|{_NUMBER_BEFORE_DIRECTION}(?:{_DIRECTION_ALTERNATIVES})\b"
     rf"|\b(?:{_DIRECTION_ALTERNATIVES})\s+(?:(?:{_WHAT_MOVES})\s+)?{_ROUGHLY}?({NUMBER_TEXT})(?![\w.])"
     r"(?!\s*(?:(?:way)?points?|steps?|times?|turns?))",
     re.I,
@@ -121,11 +124,7 @@ def asked_kinds(words: str) -> frozenset[str]:
     return frozenset(kinds)
 
 
-PAIRED = re.compile(
-    rf"(?<![\w.])({NUMBER_TEXT})\s+(?:(?:more|further|farther|over)\s+)?(?:(?:to|towards?)\s+(?:the\s+)?)?"
-    rf"({_DIRECTION_ALTERNATIVES})\b",
-    re.I,
-)
+PAIRED = re.compile(rf"{_NUMBER_BEFORE_DIRECTION}({_DIRECTION_ALTERNATIVES})\b", re.I)
 """A number right before its direction word: "0.1 further right", "0.05 lower", "0.2 to the left"."""
 
 

@@ -66,7 +66,14 @@ from trajadapt.code_parse import (
 )
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.least_distances import come_within_stated_reaches, keep_stated_clearances
-from trajadapt.readers.object_words import WITHIN, ObjectAsk, asked_words, ends_at_the_place, object_asks
+from trajadapt.readers.object_words import (
+    PACES,
+    WITHIN,
+    ObjectAsk,
+    asked_words,
+    ends_at_the_place,
+    object_asks,
+)
 from trajadapt.readers.paces import asked_factor
 from trajadapt.readers.words import (
     MINIMUM_DISTANCE,
@@ -87,7 +94,7 @@ CIRCLING = re.compile(
 
 def _steps_for_place(ask: ObjectAsk, words: str) -> tuple[str, ...]:
     """The steps on an object that may stand where the clause asks something of it."""
-    if ask.relation in ("faster", "slower") and not CIRCLING.search(words):
+    if ask.relation in PACES and not CIRCLING.search(words):
         return (*DISTANCE_STEPS, "circle_around")
     if ask.relation == "by" and not ends_at_the_place(ask.clause, words):  # "detour by X": no reach(X)
         return (*DISTANCE_STEPS, "reach", "stop_at")
@@ -105,7 +112,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
     _reach_of_paces(lines, notes, asks)
     changes_speed = any(call_of(line, SPEED_STEPS) is not None for line in lines)
     for ask in asks.values():
-        if ask.relation in ("faster", "slower") and changes_speed:
+        if ask.relation in PACES and changes_speed:
             continue
         written = _steps_for_place(ask, words)
         steps = [
@@ -129,7 +136,7 @@ def replace_object_steps(code: str, asked: Iterable[str], names: Iterable[str]) 
 
 def _crossed_objects(lines: list[str], notes: list[str], asks: dict[str, ObjectAsk]) -> None:
     """A speed step near the object a distance is asked of, when a pace is asked near another: swapped."""
-    paced = [a for a in asks.values() if a.relation in ("faster", "slower")]
+    paced = [a for a in asks.values() if a.relation in PACES]
     placed = [a for a in asks.values() if a.relation in ("closer", "away")]
     if len(paced) != 1 or len(placed) != 1:
         return
@@ -234,7 +241,7 @@ def _distance_steps_where_asked(
     for place in (a for a in asks.values() if a.relation in WAYS):
         if not any(step_on_object(x, place.name) for x in lines) and len(strays()) == 1:
             _retarget(lines, notes, strays()[0], place)
-    paced = {a.name.casefold() for a in asks.values() if a.relation in ("faster", "slower")}
+    paced = {a.name.casefold() for a in asks.values() if a.relation in PACES}
     placed = {_paced_object(x) for x in lines}
     for index in reversed(strays()):
         if _sole_object(lines[index]) in paced & placed:
@@ -328,7 +335,7 @@ def _replacement(line: str, ask: ObjectAsk) -> list[str] | None:
     """The lines that replace ``line`` (a distance step on ``ask.name``), or None to keep it."""
     _, call, skill = assigned_call(line)  # type: ignore[misc]
     point = f"detect_objects({ask.name!r})"
-    if ask.relation in ("faster", "slower"):
+    if ask.relation in PACES:
         factor = asked_factor(ask.clause, ask.relation == "faster")
         radius = f", radius={ask.radius}" if ask.radius is not None else ""
         speed = f"t = scale_speed(t, {factor}, near={point}{radius})"

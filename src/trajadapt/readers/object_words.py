@@ -80,6 +80,7 @@ def _one_ask(found: list[ObjectAsk]) -> ObjectAsk | None:
 
 
 PACES = ("faster", "slower")
+"""The relations that ask a pace near an object (the others ask a way to go, a side or a visit)."""
 
 
 def _clause_ask(clause: str, name: str) -> ObjectAsk | None:

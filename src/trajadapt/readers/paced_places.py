@@ -26,7 +26,7 @@ from trajadapt.code_parse import (
     placed_near,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.object_words import object_asks
+from trajadapt.readers.object_words import PACES, object_asks
 from trajadapt.readers.words import asks_distance, longest_names, names_in
 
 MOVING_STEPS = (*DISTANCE_STEPS, "pass_through", "pass_over", "reach", "circle_around", "keep_side")
@@ -82,7 +82,7 @@ def _only_paced(words: str, names: list[str]) -> list[str]:
 
     None when a clause that names no object asks a move by one it points to ("and keep away from it").
     """
-    paced = [a.name for a in object_asks(words, names).values() if a.relation in ("faster", "slower")]
+    paced = [a.name for a in object_asks(words, names).values() if a.relation in PACES]
     clauses = split_clauses(words, names)
     if any(_moves_by_a_pointed_object(c, names) for c in clauses):
         return []

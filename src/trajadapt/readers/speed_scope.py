@@ -150,9 +150,7 @@ def _to_the_paced_part(
     if part is None or names_in(paced, names) or found is None:
         return "\n".join(lines), []
     tree, call, _ = found
-    call.args = call.args[:2]
-    call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
-    call.keywords.append(ast.keyword("part", ast.Constant(part)))
+    _placed_in(call, part)
     before, after = lines[index].strip(), ast.unparse(tree)
     lines[index] = in_place_of(lines[index], after)
     note = (
@@ -179,7 +177,7 @@ def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[
         return code, []
     index = unplaced[0]
     tree, call = _unplaced_speed_call(lines[index], True)  # type: ignore[misc]
-    call.keywords.append(ast.keyword("part", ast.Constant(part)))
+    _placed_in(call, part)
     before, after = lines[index].strip(), ast.unparse(tree)
     lines[index] = in_place_of(lines[index], after)
     return "\n".join(lines), [
@@ -211,10 +209,7 @@ def _unsaid_ends_as_places(code: str, words: str) -> tuple[str, list[str]]:
         part = part_named(own or " ".join(c for c in split_clauses(words) if asks_pace(c)))
         if said:
             part = part or ("end" if end == "goal" else "start")
-        call.args = call.args[:2]  # a place given in order (near, radius, part) goes with the keywords
-        call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
-        if part:
-            call.keywords.append(ast.keyword("part", ast.Constant(part)))
+        _placed_in(call, part)
         before, after = line.strip(), ast.unparse(tree)
         lines[index] = in_place_of(line, after)
         where = f"in the {part}" if part else "everywhere"
@@ -243,6 +238,17 @@ END_AS_A_PART = {
 }
 """An end said as a stretch of the path, not a place near which ("speed up the start", "slow the end";
 "the opening section" is read as "the start"; not "near the start", "at the end point")."""
+
+
+def _placed_in(call: ast.Call, part: str | None) -> None:
+    """``call`` (a speed step) placed in ``part`` (None: everywhere), its own place taken away.
+
+    A place given in order (near, radius, part) goes with the keywords.
+    """
+    call.args = call.args[:2]
+    call.keywords = [k for k in call.keywords if k.arg not in ("near", "radius", "part")]
+    if part:
+        call.keywords.append(ast.keyword("part", ast.Constant(part)))
 
 
 def _end_as_a_part(end: str, words: str) -> bool:

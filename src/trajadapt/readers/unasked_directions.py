@@ -45,7 +45,7 @@ from trajadapt.code_parse import (
     step_on_object,
 )
 from trajadapt.readers.direction_words import said_directions
-from trajadapt.readers.object_words import asked_words, object_asks
+from trajadapt.readers.object_words import PACES, asked_words, object_asks
 from trajadapt.readers.paces import STOP_RAMP_START, asked_factor, closing_share_start
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, intensity_word, part_named
@@ -107,7 +107,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
             return step, f"it asks {asked_words(ask)} {ask.name}"
     if any(called_name(x) in SPEED_STEPS for x in lines):
         return None, ""
-    paces = [ask for ask in asks if ask.relation in ("faster", "slower")]
+    paces = [ask for ask in asks if ask.relation in PACES]
     if len(paces) == 1:
         ask = paces[0]
         factor = asked_factor(ask.clause, ask.relation == "faster")

@@ -167,17 +167,25 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
     return None
 
 
+def _set_speed(line: str) -> tuple[ast.Module, ast.Call, float] | None:
+    """The parsed line, its ``set_speed`` call and the plain number it sets, for such a line."""
+    found = _skill_call(line)
+    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+        return None
+    value = signed_number(found[1].args[1])
+    return None if value is None else (found[0], found[1], value)
+
+
 def _factor_set_as_a_speed(line: str, words: str) -> str | None:
     """``set_speed`` of a factor the words state, where they give no speed: ``scale_speed`` of it.
 
     "Fly the first part at half speed" came back as ``set_speed(t, 0.5)``: half the speed, not 0.5.
     """
-    found = _skill_call(line)
-    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+    found = _set_speed(line)
+    if found is None:
         return None
-    tree, call, _ = found
-    value = signed_number(call.args[1])
-    if value is None or SPEED_UNIT.search(words):
+    tree, call, value = found
+    if SPEED_UNIT.search(words):
         return None  # "half a metre a second" is a speed
     digits = [float(n) for n in re.findall(r"\d+\.?\d*|\.\d+", words)]
     stated = {stated_factor(words, faster) for faster in (False, True)} - {None}
@@ -194,13 +202,12 @@ def _made_up_speed(line: str, numbers: list[float], words: str) -> str | None:
     path's own speed copied, no slower. The words ask slower (or faster) and no speed, so the step
     scales the speed by the phrase table's factor for their amount word, in the same place.
     """
-    found = _skill_call(line)
-    if found is None or found[2] != "set_speed" or not found[1].args[1:2]:
+    found = _set_speed(line)
+    if found is None:
         return None
-    tree, call, _ = found
-    value = signed_number(call.args[1])
+    tree, call, value = found
     faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
-    if value is None or value == 0 or faster == slower or is_stated(value, numbers):
+    if value == 0 or faster == slower or is_stated(value, numbers):
         return None  # 0: a halt there, no pace
     call.func = ast.Name("scale_speed", ast.Load())
     call.args[1] = ast.Constant(speed_factor(words, faster))

@@ -375,4 +375,4 @@ def test_a_share_of_the_speed_replaces_the_models_guess():
         "crawl past the lamp at roughly a third of the current speed there",
         "t = scale_speed(t, 0.65, near=detect_objects('lamp'))",
     )
-    assert after == ["t = scale_speed(t, 0.333333, near=detect_objects('lamp'))"]
+    assert after == ["t = scale_speed(t, 0.333333, near=detect_objects('lamp'), held=True)"]

@@ -220,7 +220,7 @@ def test_a_factor_before_a_speed_names_its_direction(words: str, faster: bool, s
 def test_a_pace_said_as_a_factor_is_that_factor_wherever_it_is_read() -> None:
     code = "t = get_trajectory()\nt = shift(t, 'left')\nmodified_trajectory = t"
     read, _ = read_against_words(code, ["near the lamp, move at half speed"], ["lamp"])
-    assert "t = scale_speed(t, 0.5, near=detect_objects('lamp'))" in read.splitlines()
+    assert "t = scale_speed(t, 0.5, near=detect_objects('lamp'), held=True)" in read.splitlines()
 
 
 @pytest.mark.parametrize(

@@ -29,6 +29,7 @@ from trajadapt.readers.clause_amounts import in_metres
 from trajadapt.readers.curve_asks import bend_as_asked
 from trajadapt.readers.end_places import end_at_asked_places
 from trajadapt.readers.height_asks import relate_heights
+from trajadapt.readers.held_paces import hold_stated_paces
 from trajadapt.readers.kept_ends import keep_kept_ends
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.object_mentions import chosen_referents
@@ -111,6 +112,8 @@ READERS: tuple[Reader, ...] = (
            leave_out_moves_of_paced_places),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",
            profile_paces),
+    Reader("held-paces", "a pace the words state near an object, held over the stretch nearest it",
+           hold_stated_paces),
     Reader("waypoint-counts", "a count of waypoints the words give, and the resample that makes it",
            lambda code, asked, _: count_as_asked(code, asked)),
     Reader("kept-ends", "an end of the path the words keep where it is, and steps that move it",

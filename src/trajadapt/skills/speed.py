@@ -36,6 +36,11 @@ NEAR_REACH = 0.4  # how far (fraction of the path's size) "near an object" reach
 # (calibrated on latte-dev with the factors of the prompt's phrase table: 0.2 before)
 
 
+HELD_SHARE = 0.2  # a held pace holds over the share of waypoints nearest the object ...
+HELD_BEYOND = 0.1  # ... but not beyond this much (of the path's size) past the closest pass
+HELD_FADE = 0.3  # and fades out within this much (of the path's size) past that stretch
+
+
 NEAR_RULES = ("zone", "latte")
 """What "near an object" means to a speed change: ``zone`` (the default: the whole change at the
 path's closest pass, fading within ``NEAR_REACH`` beyond it, wherever the object is) or ``latte``
@@ -65,6 +70,7 @@ def speed_weight(
     radius: float | None = None,
     part: Any = None,
     near_rule: str = "zone",
+    held: bool = False,
 ) -> Array:
     """Where a speed change applies: a weight 0..1 per waypoint.
 
@@ -81,12 +87,29 @@ def speed_weight(
         point = as_point(near, "near")
         if radius is not None:
             weight *= within(t, point, float(radius), blend=0.25 * float(radius))
+        elif held:
+            weight *= held_zone(t, point)
         elif checked_near_rule(near_rule) == "latte":
             weight *= latte_field(t, point)
         else:
             weight *= proximity(t, point, NEAR_REACH * extent(t))
     if part is not None:
         weight *= part_mask(t, part)
+    return weight
+
+
+def held_zone(trajectory: Array, point: Array) -> Array:
+    """1 over the stretch nearest ``point``, fading to 0 beyond it: where a stated pace holds.
+
+    The stretch is the ``HELD_SHARE`` of waypoints nearest the point, cut at ``HELD_BEYOND`` of the
+    path's size past its closest pass; the weight fades (a Gaussian in the distance) within
+    ``HELD_FADE`` of the size past the stretch.
+    """
+    distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
+    size = extent(trajectory)
+    edge = min(float(np.sort(distance)[int(HELD_SHARE * len(distance))]), distance.min() + HELD_BEYOND * size)
+    beyond = np.clip(distance - edge, 0.0, None) / (HELD_FADE * size)
+    weight: Array = np.exp(-(beyond**2) * 3.0)
     return weight
 
 
@@ -114,17 +137,19 @@ def scale_speed(
     part: PartArg = None,
     *,
     near_rule: str = "zone",
+    held: bool = False,
 ) -> Array:
     """Multiply velocity by factor (0.5 half, 2 double): everywhere, near a point, or in a part.
 
     Multiply the velocity by factor (0.5 = half as fast, 2 = twice as fast), everywhere or only near a
     point / within radius of it / in a part. ``near_rule`` (bound by the sandbox from the user's
-    settings) says what near means: see ``NEAR_RULES``.
+    settings) says what near means: see ``NEAR_RULES``. ``held`` (set by the readers where the words
+    state the factor near the object) holds the factor over the stretch nearest it: ``held_zone``.
     """
     t = as_trajectory(trajectory)
     if float(factor) < 0:
         raise ValueError(f"factor must be >= 0, got {factor}")
-    weight = speed_weight(t, near, radius, part, near_rule)
+    weight = speed_weight(t, near, radius, part, near_rule, held)
     t[:, 3] *= 1.0 + (float(factor) - 1.0) * weight
     return t
 

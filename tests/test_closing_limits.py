@@ -170,3 +170,38 @@ def test_a_clearance_the_bounds_leave_no_room_for_does_not_pull_the_path_across_
     steps = np.linalg.norm(np.diff(projected.trajectory[:, :3], axis=0), axis=1)
     assert not projected.remaining
     assert steps.max() <= 2 * np.linalg.norm(np.diff(original[:, :3], axis=0), axis=1).max()
+
+
+OVERLAPPING = Scene(objects=(SceneObject("fan", 0.0, 0.3, 0.0), SceneObject("bottle", 0.5, -0.3, 0.0)))
+
+
+def straight_between(n: int = 40) -> np.ndarray:
+    """A floor path that runs between the fan and the bottle, closer to each than 0.5."""
+    s = np.linspace(0.0, 1.0, n)
+    return np.column_stack([-1.5 + 3.0 * s, np.zeros(n), np.zeros(n), np.ones(n)])
+
+
+def nearest(t: np.ndarray, point: tuple[float, float, float]) -> float:
+    return float(np.linalg.norm(t[:, :3] - np.asarray(point), axis=1).min())
+
+
+@pytest.mark.parametrize("clear", [0.45, 0.5, 0.6])
+def test_one_avoid_of_two_points_whose_clearances_overlap_keeps_both(clear: float) -> None:
+    fan, bottle = (0.0, 0.3, 0.0), (0.5, -0.3, 0.0)
+    held = SKILLS["avoid"](straight_between(), [list(fan), list(bottle)], clear)
+    assert nearest(held, fan) >= clear * (1 - 1e-9) and nearest(held, bottle) >= clear * (1 - 1e-9)
+
+
+@pytest.mark.parametrize("clear", [0.45, 0.5, 0.6])
+def test_two_closing_avoids_whose_clearances_overlap_are_held_together(clear: float) -> None:
+    code = program(
+        f"t = avoid(t, detect_objects('fan'), {clear})",
+        f"t = avoid(t, detect_objects('bottle'), {clear})",
+        "t = speed_profile(t, 'decelerate', start=0.6)",
+    )
+    fan, bottle = (0.0, 0.3, 0.0), (0.5, -0.3, 0.0)
+    ran = SKILLS["avoid"](SKILLS["avoid"](straight_between(), list(fan), clear), list(bottle), clear)
+    held, note = hold_closing_limits(code, ran, OVERLAPPING)
+    assert nearest(held, fan) >= clear - 1e-6 and nearest(held, bottle) >= clear - 1e-6
+    if nearest(ran, fan) < clear - 1e-6:
+        assert note is not None and f"the clearance {clear:g} from fan" in note

@@ -27,11 +27,15 @@ from trajadapt.code_parse import SPEED_STEPS, detected_name, parse_code
 from trajadapt.model.geometry import Array, progress
 from trajadapt.model.scene import Scene
 from trajadapt.skills import bind_skills
+from trajadapt.skills.objects import clearance_push
 from trajadapt.skills.shape import LIMIT_FADE
 
 ROUNDS = 10
 """How often the closing limits are applied in turn at most (two rounds sufficed where measured)."""
 SLACK = 1e-6
+NUDGE_MARGIN = 1.02
+"""A nudged waypoint goes this much beyond its clearance (as ``avoid``'s own passes do): pushes out of
+two overlapping clearances in turn otherwise close in on their meeting point ever more slowly."""
 LIMIT_STEPS = ("avoid", "stay_above", "stay_below")
 
 
@@ -74,6 +78,19 @@ class Limit:
             return skills["avoid"](trajectory, [list(p) for p in self.points], self.value)
         return skills[self.skill](trajectory, self.value, keep_ends=self.keep_ends)
 
+    def nudge(self, trajectory: Array, skills: dict[str, Callable[..., Array]]) -> Array:
+        """The trajectory with only the waypoints that break this limit moved.
+
+        Out of a clearance straight away from its point (no smooth detour, which pushes into a
+        neighbouring clearance), or by this limit's height skill.
+        """
+        if self.skill != "avoid":
+            return self.apply(trajectory, skills)
+        held = trajectory.copy()
+        for point in self.points:
+            held[:, :3] += clearance_push(held, np.asarray(point), self.value * NUDGE_MARGIN, sideways=False)
+        return held
+
 
 def closing_limits(code: str, scene: Scene) -> list[Limit]:
     """The limits of the program's closing run of limit steps, in order ([] when one cannot be read)."""
@@ -110,18 +127,31 @@ def hold_closing_limits(
     if len(limits) < 2 or not broken:
         return trajectory, None
     skills = skills or bind_skills()
-    held = trajectory.copy()
-    for _ in range(ROUNDS):
-        for limit in limits:
-            held = limit.apply(held, skills)
-        if all(limit.holds(held) for limit in limits):
-            moved = float(np.linalg.norm(held[:, :3] - trajectory[:, :3], axis=1).max())
-            what = "; ".join(f"{x.describe()} (short by {-x.worst(trajectory):.3g})" for x in broken)
-            return held, (
-                f"the closing limits held together: a later limit step had broken {what}; "
-                f"waypoints moved by at most {moved:.4g}"
-            )
+    held = _held(trajectory, limits, skills)
+    if held is not None:
+        moved = float(np.linalg.norm(held[:, :3] - trajectory[:, :3], axis=1).max())
+        what = "; ".join(f"{x.describe()} (short by {-x.worst(trajectory):.3g})" for x in broken)
+        return held, (
+            f"the closing limits held together: a later limit step had broken {what}; "
+            f"waypoints moved by at most {moved:.4g}"
+        )
     return trajectory, None
+
+
+def _held(trajectory: Array, limits: list[Limit], skills: dict[str, Callable[..., Array]]) -> Array | None:
+    """The trajectory with every limit holding, or None if it cannot be held.
+
+    Each limit's skill in turn, then (where clearances overlap and the detours push into each other)
+    only the breaking waypoints nudged.
+    """
+    for step in (Limit.apply, Limit.nudge):
+        held = trajectory.copy()
+        for _ in range(ROUNDS):
+            for limit in limits:
+                held = step(limit, held, skills)
+            if all(limit.holds(held) for limit in limits):
+                return held
+    return None
 
 
 def kept_clearances(code: str, scene: Scene) -> tuple[tuple[tuple[float, float, float], float], ...]:

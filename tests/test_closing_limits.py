@@ -84,7 +84,9 @@ def test_closing_limits_hold_together_or_the_result_stays(depth, clear, floor, o
     [
         # a step after the limits is the program's own business ("end at the box")
         program(
-            "t = avoid(t, detect_objects('person'), 0.6)", "t = stay_above(t, 0.2)", "t = reach(t, [0, 0, 0])"
+            "t = avoid(t, detect_objects('person'), 0.6)",
+            "t = stay_above(t, 0.2)",
+            "t = reach(t, detect_objects('person'))",
         ),
         # one closing limit keeps itself
         program("t = shift(t, 'down', 0.5)", "t = avoid(t, detect_objects('person'), 0.6)"),
@@ -138,9 +140,34 @@ def test_a_pace_between_the_limits_does_not_end_the_closing_run() -> None:
     assert kept_clearances(code, SCENE) == (((0.0, 0.0, 0.3), 0.6),)
 
 
-def test_a_limit_before_a_move_is_no_kept_clearance() -> None:
-    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = shift(t, 'left', 0.2)")
+def test_a_limit_before_a_step_on_its_object_is_no_kept_clearance() -> None:
+    code = program(
+        "t = avoid(t, detect_objects('person'), 0.6)", "t = pass_through(t, detect_objects('person'))"
+    )
     assert kept_clearances(code, SCENE) == ()
+
+
+def test_a_limit_before_a_step_on_other_things_is_a_kept_clearance() -> None:
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = reach(t, detect_objects('box'))")
+    assert kept_clearances(code, SCENE) == (((0.0, 0.0, 0.3), 0.6),)
+
+
+def test_a_clearance_a_later_move_broke_is_held_with_the_ends_where_the_program_put_them() -> None:
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = shift_part(t, 'down', 0.4, 'middle')")
+    ran = run(code, dipping_path(depth=0.9))
+    assert clearance(ran, "person") < 0.6  # the later move broke the clearance, as written
+    held, note = hold_closing_limits(code, ran, SCENE)
+    assert clearance(held, "person") >= 0.6 - 1e-6
+    np.testing.assert_array_equal(held[[0, -1]], ran[[0, -1]])
+    assert note is not None and "clearance 0.6 from person" in note
+
+
+def test_a_clearance_that_would_move_an_end_is_not_held() -> None:
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = reach(t, [0.0, 0.0, 0.0])")
+    ran = run(code, dipping_path())
+    held, note = hold_closing_limits(code, ran, SCENE)
+    assert note is None
+    np.testing.assert_array_equal(held, ran)
 
 
 @pytest.mark.parametrize(("name", "clearance"), [("fan", 1.0), ("bed", 0.8)])

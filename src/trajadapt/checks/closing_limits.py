@@ -7,9 +7,12 @@ Each step keeps its own limit only when it runs. The closing run of limit steps 
 objects with a stated clearance, ``stay_above``, ``stay_below``: every step after the program's last
 other step; a speed step between them moves no waypoint and does not end the run) is applied again
 in turn, at most ``ROUNDS`` times, until every limit holds; the result is kept only if they all hold
-then, with a note that says which limit a later step had broken and how far the waypoints moved. A
-limit written before another kind of step is that program's own business
-(``avoid`` of a box, then ``reach`` of the box, asks the path to end at the box).
+then, with a note that says which limit a later step had broken and how far the waypoints moved.
+A clearance written before another kind of step is held with them when no later step names its
+object and the start and goal stay where the program put them (``earlier_clearances``); a later
+step on the same object is that program's own business (``avoid`` of a box, then ``reach`` of the
+box, asks the path to end at the box). A projection onto the robot's limits keeps both kinds
+(``kept_clearances``).
 
 Only literal numbers and ``detect_objects`` of scene objects are read from the code: nothing of it
 runs here, and the skills applied are the product's own.
@@ -23,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from trajadapt.code_parse import SPEED_STEPS, detected_name, parse_code
+from trajadapt.code_parse import SPEED_STEPS, detected_name, detected_names, parse_code
 from trajadapt.model.geometry import Array, progress
 from trajadapt.model.scene import Scene
 from trajadapt.skills import bind_skills
@@ -119,15 +122,15 @@ def hold_closing_limits(
 ) -> tuple[Array, str | None]:
     """``trajectory`` with the program's closing limits held together, and a note saying so.
 
-    Unchanged, with None, when they hold already, when there are fewer than two, or when they cannot
-    all be held.
+    Unchanged, with None, when they hold already, when there is one closing limit and no earlier
+    clearance broken, or when they cannot all be held.
     """
-    limits = closing_limits(code, scene)
-    broken = [limit for limit in limits if not limit.holds(trajectory)]
-    if len(limits) < 2 or not broken:
+    limits, earlier = closing_limits(code, scene), earlier_clearances(code, scene)
+    broken = [limit for limit in (*earlier, *limits) if not limit.holds(trajectory)]
+    if not broken or (len(limits) < 2 and not any(limit in earlier for limit in broken)):
         return trajectory, None
     skills = skills or bind_skills()
-    held = _held(trajectory, limits, skills)
+    held = _held(trajectory, [*earlier, *limits], skills, keep_ends=bool(earlier))
     if held is not None:
         moved = float(np.linalg.norm(held[:, :3] - trajectory[:, :3], axis=1).max())
         what = "; ".join(f"{x.describe()} (short by {-x.worst(trajectory):.3g})" for x in broken)
@@ -138,25 +141,71 @@ def hold_closing_limits(
     return trajectory, None
 
 
-def _held(trajectory: Array, limits: list[Limit], skills: dict[str, Callable[..., Array]]) -> Array | None:
-    """The trajectory with every limit holding, or None if it cannot be held.
+def _held(
+    trajectory: Array, limits: list[Limit], skills: dict[str, Callable[..., Array]], keep_ends: bool = False
+) -> Array | None:
+    """The trajectory with every limit holding (and, if ``keep_ends``, its ends where they are), or None.
 
     Each limit's skill in turn, then (where clearances overlap and the detours push into each other)
     only the breaking waypoints nudged.
     """
+    ends = trajectory[[0, -1], :3]
     for step in (Limit.apply, Limit.nudge):
         held = trajectory.copy()
         for _ in range(ROUNDS):
             for limit in limits:
                 held = step(limit, held, skills)
             if all(limit.holds(held) for limit in limits):
-                return held
+                break
+        kept = not keep_ends or np.allclose(held[[0, -1], :3], ends, rtol=0.0, atol=1e-9)
+        if kept and all(limit.holds(held) for limit in limits):
+            return held
     return None
 
 
+def earlier_clearances(code: str, scene: Scene) -> list[Limit]:
+    """The clearances of ``avoid`` steps before the closing run that no later step names the objects of.
+
+    "Stay at least 0.3 from the Dustbin, and keep the landing spot where it is" came back as
+    ``avoid(t, detect_objects('Dustbin'), 0.3)`` then ``reach(t, detect_objects('goal'))``, and the
+    pull back to the goal brought the path 0.282 from the Dustbin. A later step on the same object
+    (``reach`` of it, ``pass_through`` it) asks something of it that the program means instead, so
+    that clearance is not kept.
+    """
+    try:
+        body = parse_code(code).body
+    except SyntaxError:
+        return []
+    steps = [s for s in body if not _passes_on(s)]
+    found: list[Limit] = []
+    for index, statement in enumerate(steps):
+        call, later = _call(statement), steps[index + 1 :]
+        if call is None or _step_name(statement) != "avoid":
+            continue
+        if all(_step_name(s) in (*SPEED_STEPS, *LIMIT_STEPS) for s in later):
+            break  # the closing run: held as such
+        limit = _limit("avoid", call, scene)
+        named = {n.casefold() for s in later for n in detected_names(s)}
+        if limit is not None and not named & {n.casefold() for n in limit.names}:
+            found.append(limit)
+    return found
+
+
+def _step_name(statement: ast.stmt) -> str:
+    """The skill a step ``t = skill(...)`` calls, or ''."""
+    call = _call(statement)
+    return call.func.id if call is not None and isinstance(call.func, ast.Name) else ""
+
+
+def _call(statement: ast.stmt) -> ast.Call | None:
+    """The call of a step ``t = skill(...)``, or None."""
+    call = statement.value if isinstance(statement, ast.Assign) else None
+    return call if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) else None
+
+
 def kept_clearances(code: str, scene: Scene) -> tuple[tuple[tuple[float, float, float], float], ...]:
-    """(point, least distance) for each clearance the program's closing ``avoid`` steps keep."""
-    limits = closing_limits(code, scene)
+    """(point, least distance) for each clearance the program keeps: its closing and earlier ``avoid``s."""
+    limits = [*earlier_clearances(code, scene), *closing_limits(code, scene)]
     return tuple((point, limit.value) for limit in limits if limit.skill == "avoid" for point in limit.points)
 
 

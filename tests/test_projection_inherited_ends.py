@@ -71,3 +71,17 @@ def test_the_note_says_which_limits_were_left_as_the_original_has_them() -> None
     assert result.remaining == ()
     assert len(result.as_original) == 1 and "z below 0" in result.as_original[0]
     assert "left as the original has them at its start or goal: " in result.describe()
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(-0.45, 0.45), st.floats(0.3, 1.2), st.floats(0.51, 0.9))
+def test_an_end_the_code_moved_within_the_limits_stays_where_the_code_put_it(
+    goal_shift: float, bulge: float, too_far: float
+) -> None:
+    original = line(40, 0.2, 0.2)
+    adapted = original.copy()
+    adapted[:, 0] += goal_shift * np.linspace(0.0, 1.0, 40) ** 2  # the goal moved sideways, within x <= 0.5
+    adapted[15:25, 0] += too_far * np.sin(np.linspace(0.0, np.pi, 10)) * bulge  # a bulge that breaks x <= 0.5
+    result = project(adapted, original, Scene(()), FLOOR)
+    np.testing.assert_allclose(result.trajectory[[0, -1], :3], adapted[[0, -1], :3], atol=1e-9)
+    assert not find_violations(result.trajectory, original, Scene(()), FLOOR)

@@ -31,10 +31,15 @@ import numpy as np
 from trajadapt.checks.constraints import (
     ConstraintMove,
     Constraints,
-    Violation,
     enclosing_radius,
     find_violations,
     new_violations,
+)
+from trajadapt.checks.projection_ends import (
+    broken_at_ends,
+    ends_where_the_program_put_them,
+    held_as_original,
+    holding_kept_ends,
 )
 from trajadapt.checks.projection_moves import constraint_moves
 from trajadapt.errors import DependencyNotInstalled
@@ -83,17 +88,20 @@ def project(
     Raises:
         DependencyNotInstalled: osqp or scipy is missing.
     """
-    inherited = _broken_at_ends(original, original, scene, constraints)
-    constraints = _holding_kept_ends(trajectory, original, scene, constraints, inherited)
+    inherited = broken_at_ends(original, original, scene, constraints)
+    constraints = holding_kept_ends(trajectory, original, scene, constraints, inherited)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
-    compact = _keeping_what_it_can(trajectory[firsts], original, Problem(scene, constraints, tuple(kept)))
+    ends = ends_where_the_program_put_them(trajectory, original, scene, constraints, inherited)
+    compact = _keeping_what_it_can(
+        trajectory[firsts], original, Problem(scene, constraints, tuple(kept), ends)
+    )
     projected = trajectory.copy()
     projected[:, :3] = compact[runs, :3]
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
     left = find_violations(projected, original, scene, constraints)
-    held = _held_as_original(left, len(projected), inherited, constraints)
+    held = held_as_original(left, len(projected), inherited, constraints)
     remaining = tuple(v.message for v in left if v.key not in held)
     as_original = tuple(v.message for v in left if v.key in held)
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
@@ -109,6 +117,8 @@ class Problem:
     scene: Scene
     constraints: Constraints
     kept: Kept = ()
+    ends: tuple[tuple[int, tuple[float, float, float]], ...] = ()
+    """Ends held where the program put them: (0 or -1, position)."""
 
     def broken(self, trajectory: Array, original: Array) -> int:
         """How many constraints and kept clearances ``trajectory`` breaks."""
@@ -125,68 +135,6 @@ class Problem:
 
 def _nearest(trajectory: Array, point: Sequence[float]) -> float:
     return float(np.linalg.norm(trajectory[:, :3] - np.asarray(point, dtype=np.float64), axis=1).min())
-
-
-def _holding_kept_ends(
-    trajectory: Array,
-    original: Array,
-    scene: Scene,
-    constraints: Constraints,
-    inherited: set[tuple[str, int]],
-) -> Constraints:
-    """Also hold the start / goal where the code left them (at the original's), unless it broke a limit there.
-
-    The smoothing would otherwise move an end nobody asked to move (a curve made rounder, then lifted
-    back above the floor, started 0.04 away from where it started). A limit the original itself
-    broke at that end (a path that starts below its floor, or beside an object closer than the
-    clearance; ``inherited``, from ``_broken_at_ends`` of the original) is left alone: the projection
-    is for what the code broke.
-    """
-    broken = {end for _, end in _broken_at_ends(trajectory, original, scene, constraints) - inherited}
-    tolerance = 1e-9 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
-    kept = [
-        float(np.linalg.norm(trajectory[index, :3] - original[index, :3])) <= tolerance
-        and index not in broken
-        for index in (0, -1)
-    ]
-    return replace(
-        constraints, keep_start=constraints.keep_start or kept[0], keep_goal=constraints.keep_goal or kept[1]
-    )
-
-
-def _held_as_original(
-    left: list[Violation], count: int, inherited: set[tuple[str, int]], constraints: Constraints
-) -> set[str]:
-    """The limits of ``left`` broken only at ends where the original broke them too.
-
-    Only the ends the projection kept at the original's position count (``constraints.keep_start``
-    / ``keep_goal``); ``count`` is the number of waypoints ``left`` was measured on.
-    """
-    kept = {end for end, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)) if keep}
-    held = set()
-    for violation in left:
-        ends = {_end_of(i, count) for i in violation.waypoints}
-        if ends and ends <= kept and all((violation.key, end) in inherited for end in ends):
-            held.add(violation.key)
-    return held
-
-
-def _broken_at_ends(
-    trajectory: Array, original: Array, scene: Scene, constraints: Constraints
-) -> set[tuple[str, int]]:
-    """(limit, end) for each limit ``trajectory`` breaks at its start (end 0) or its goal (end -1)."""
-    return {
-        (v.key, end)
-        for v in find_violations(trajectory, original, scene, constraints)
-        for i in v.waypoints
-        if (end := _end_of(i, len(trajectory))) is not None
-    }
-
-
-def _end_of(index: int, count: int) -> int | None:
-    """0 for the first of ``count`` waypoints, -1 for the last (negative indices too), else None."""
-    position = index % count
-    return 0 if position == 0 else -1 if position == count - 1 else None
 
 
 def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
@@ -231,6 +179,8 @@ def _project_distinct(trajectory: Array, original: Array, problem: Problem) -> A
     for index, keep in ((0, problem.constraints.keep_start), (-1, problem.constraints.keep_goal)):
         if keep:
             projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
+    for index, position in problem.ends:
+        projected[index, :3] = position
     result: Array = projected
     return result
 
@@ -265,6 +215,8 @@ def _push_into(trajectory: Array, original: Array, problem: Problem) -> Array:
     for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
         if keep:
             fixed[index, :3] = original[index, :3]
+    for index, position in problem.ends:
+        fixed[index, :3] = position
     return fixed
 
 
@@ -305,6 +257,9 @@ def _constraint_rows(around: Array, original: Array, problem: Problem) -> tuple[
     for index, keep, fixed in ((0, constraints.keep_start, 0), (count - 1, constraints.keep_goal, -1)):
         if keep:  # the original's own end: the result may have another number of waypoints
             lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = original[fixed, :3]
+    for end, position in problem.ends:
+        index = 0 if end == 0 else count - 1
+        lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = position
     low.append(lower)
     high.append(upper)
     for row, bound in _clearance_rows(around, problem.scene, constraints) + _kept_rows(around, problem.kept):

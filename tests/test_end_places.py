@@ -6,10 +6,12 @@ the wordings here are none of any set's.
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.end_places import asked_end, end_at_asked_places
+from trajadapt.skills.events import BESIDE_GAP, stop_at
 
 NAMES = ["lamp", "box", "chair", "red cup", "cup"]
 
@@ -135,7 +137,7 @@ def test_a_step_written_for_the_end_object_alone_gives_way() -> None:
     steps = steps_after(
         "Finish up alongside the chair.", "t = keep_side(t, 'right', detect_objects('chair'))"
     )
-    assert steps == ["t = stop_at(t, detect_objects('chair'))"]
+    assert steps == ["t = stop_at(t, detect_objects('chair'), beside=True)"]
 
 
 def test_the_end_object_leaves_a_list_of_passes() -> None:
@@ -183,7 +185,7 @@ def test_a_stop_beside_the_object_comes_after_the_speed_steps() -> None:
     steps = steps_after(
         "keep a steady 0.3 and wind up close to the lamp", "t = set_speed(t, 0.3)", "t = shift(t, 'left')"
     )
-    assert steps[-1] == "t = stop_at(t, detect_objects('lamp'))"
+    assert steps[-1] == "t = stop_at(t, detect_objects('lamp'), beside=True)"
 
 
 SLOWING_TO_REST = "t = speed_profile(t, 'decelerate', start=0.6)"
@@ -248,3 +250,54 @@ def test_an_end_just_above_an_object_with_no_raise_written_is_raised_slightly() 
     code = program("t = avoid(t, detect_objects('lamp'), 0.2)")
     lines = end_at_asked_places(code, ["wrap up just above the lamp"], NAMES)[0].splitlines()
     assert lines[1:-1] == ["t = reach(t, detect_objects('lamp'))", "t = shift_goal(t, 'up', 'slightly')"]
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "finish up right against the chair",
+        "pull up alongside the chair",
+        "come to rest next to the chair instead of at the old goal",
+        "end beside the chair",
+    ],
+)
+def test_an_end_beside_the_object_stops_beside_it(words: str) -> None:
+    assert steps_after(words, "t = stop_at(t, detect_objects('chair'))") == [
+        "t = stop_at(t, detect_objects('chair'), beside=True)"
+    ]
+    assert (
+        steps_after(words, "t = shift(t, 'left')")[-1]
+        == "t = stop_at(t, detect_objects('chair'), beside=True)"
+    )
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "stop where the path comes closest to the chair",
+        "end at its point nearest the chair",
+        "stop at the chair",
+    ],
+)
+def test_an_end_where_the_path_passes_nearest_stays_there(words: str) -> None:
+    assert steps_after(words, "t = stop_at(t, detect_objects('chair'))") == [
+        "t = stop_at(t, detect_objects('chair'))"
+    ]
+
+
+def test_a_stop_beside_the_object_goes_on_to_beside_it_from_the_nearest_pass() -> None:
+    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
+    chair = np.array([0.0, 0.8, 0.0])
+    nearest = stop_at(path, chair)
+    beside = stop_at(path, chair, beside=True)
+    np.testing.assert_array_equal(beside[: len(nearest) - 1, :3], nearest[:-1, :3])  # the path up to its pass
+    assert np.linalg.norm(beside[-1, :3] - chair) == pytest.approx(BESIDE_GAP * 2.0)
+    assert beside[-1, 3] == 0.0 and np.all(beside[:-1, 3] > 0)
+    steps = np.linalg.norm(np.diff(beside[:, :3], axis=0), axis=1)
+    assert steps.max() <= 0.06  # no jump: the way on is spaced as the path was (0.05)
+
+
+def test_a_stop_beside_an_object_the_path_already_passes_close_to_is_the_plain_stop() -> None:
+    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
+    chair = np.array([0.0, 0.1, 0.0])
+    np.testing.assert_array_equal(stop_at(path, chair, beside=True), stop_at(path, chair))

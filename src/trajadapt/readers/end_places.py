@@ -2,10 +2,13 @@
 
 "Finish at the lamp", "wrap up at the red cup", "land on the mat", "set down at the cycle", "park at
 the box", "make the quill your end point": the path's end goes to the object, ``reach(t, lamp)``.
-"Wind up next to the chair", "end beside the sofa", "stop where it comes closest to the chair": the
-path ends where it passes nearest the object, ``stop_at(t, chair)`` (as "stop near the stinkhorn" is
-read). A small model answers such words with a step for another job (a side kept, the end part
-shifted, the object put in a pass over a list) or with no step of the object at all.
+"Stop where it comes closest to the chair": the path ends where it passes nearest the object,
+``stop_at(t, chair)``. "Wind up next to the chair", "end beside the sofa", "park right by the lamp":
+it ends there too, and where that pass is further from the object than a small gap it goes on to
+beside it, ``stop_at(t, chair, beside=True)`` (a ``stop_at`` of the object written for such words
+gets ``beside=True``; as "stop near the stinkhorn" is read). A small model answers such words with
+a step for another job (a side kept, the end part shifted, the object put in a pass over a list) or
+with no step of the object at all.
 
 A clause asks an end place (``asked_end``) when an ending verb (a word of coming to rest too: "come
 to a halt", "bring the arm to rest") is followed by a word of place and then by the one scene object
@@ -138,6 +141,7 @@ class AskedEnd:
     skill: str  # 'reach' (at the object) or 'stop_at' (where the path passes nearest it)
     at_rest: bool = False  # the words leave the robot at rest there
     above: str = ""  # a height over the object to end at: a number, or 'slightly' ("just above")
+    beside: bool = False  # "end next to": a stop beside the object, not only where the path passes
     named_before: str = ""  # for "end there": the clause before that names the object
 
 
@@ -165,7 +169,7 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
         place = _one_name(clause[found.end() :], names) if found else None
         if place is not None:
             above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
-            return AskedEnd(clause, place, skill, above=above)
+            return AskedEnd(clause, place, skill, above=above, beside=pattern is BESIDE_PLACE)
     there = THERE_PLACE.search(clause)
     if there is not None and not NEGATION.search(clause[: there.start()]):
         inside = _gone_to(clause[: there.start()], names)
@@ -221,6 +225,8 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
         lines, notes = _ended_there(lines, end, clauses, variable)
     elif end.skill == "stop_at" and not names_in(_other_clauses(clauses, end), [end.place]):
         lines, notes = _without_steps_for(lines, end, BESIDE_THE_STOP)  # the nearest pass as it was
+    if end.beside:
+        lines, notes = _stopped_beside(lines, end), [*notes, *_beside_notes(lines, end)]
     raised, step = _raised_end(lines, end, variable) if end.above else (lines, "")
     if raised != lines:
         said = end.clause.strip()
@@ -242,7 +248,8 @@ def _ended_there(
     notes: list[str] = []
     if not names_in(_other_clauses(clauses, end), [end.place]):
         lines, notes = _without_steps_for(lines, end)
-    step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}))"
+    beside = ", beside=True" if end.beside else ""
+    step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}){beside})"
     at = after_last_step(
         lines, SKILL_NAMES if end.skill == "stop_at" else MOVES_THE_PATH
     )  # a stop stays last, before a pause there (which it would cut off)
@@ -252,6 +259,38 @@ def _ended_there(
     said = end.clause.strip()
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
     return [*lines[:at], step, *lines[at:]], notes
+
+
+def _stopped_beside(lines: list[str], end: AskedEnd) -> list[str]:
+    """``lines`` with each ``stop_at`` of the end's object stopping beside it (``beside=True``)."""
+    return [_beside(line) if _plain_stop_at(line, end.place) else line for line in lines]
+
+
+def _beside_notes(lines: list[str], end: AskedEnd) -> list[str]:
+    """The notes of ``_stopped_beside``: one per step it changes."""
+    why = f"the words ask the end beside the {end.place} ({end.clause.strip()!r})"
+    return [
+        f"`{line.strip()}` -> `{_beside(line).strip()}`: {why}"
+        for line in lines
+        if _plain_stop_at(line, end.place)
+    ]
+
+
+def _plain_stop_at(line: str, place: str) -> bool:
+    """Whether ``line`` is a ``stop_at`` of ``place`` alone that does not stop beside it yet."""
+    call = call_of(line, ("stop_at",))
+    if call is None or any(k.arg == "beside" for k in call.keywords):
+        return False
+    return [name.casefold() for name in objects_of(call)] == [place.casefold()]
+
+
+def _beside(line: str) -> str:
+    """``line``'s ``stop_at`` with ``beside=True``."""
+    parsed = assigned_call(line)
+    assert parsed is not None
+    tree, call, _ = parsed
+    call.keywords.append(ast.keyword("beside", ast.Constant(True)))
+    return in_place_of(line, ast.unparse(tree))
 
 
 def _other_clauses(clauses: list[str], end: AskedEnd) -> str:

@@ -39,13 +39,31 @@ def _index(t: Array, at: Any) -> int:
     return nearest_index(t, at)
 
 
-def stop_at(trajectory: TrajectoryArg, point: PointArg) -> Array:
-    """End the trajectory at the waypoint nearest to point (later waypoints removed, velocity 0 there)."""
+BESIDE_GAP = 0.07
+"""How far from an object (a share of the path's size) an end beside it stops."""
+
+
+def stop_at(trajectory: TrajectoryArg, point: PointArg, *, beside: bool = False) -> Array:
+    """End the trajectory at the waypoint nearest to point (later waypoints removed, velocity 0 there).
+
+    ``beside`` (set by the readers for "end next to the sofa", "park right beside it"): where that
+    waypoint is further than ``BESIDE_GAP`` of the path's size from the point, the path then goes
+    on in a straight line to that distance from it, on the side it comes from.
+    """
     t = as_trajectory(trajectory)
     k = max(nearest_index(t, point), 1)
     stopped = t[: k + 1].copy()
     stopped[-1, 3] = 0.0
-    return stopped
+    if not beside:
+        return stopped
+    centre, gap = as_point(point), BESIDE_GAP * extent(t)
+    offset = stopped[-1, :3] - centre
+    distance = float(np.linalg.norm(offset))
+    if distance <= gap:
+        return stopped
+    steps = np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1)
+    count = int(np.ceil((distance - gap) / max(float(steps.mean()), 1e-12)))
+    return append_segment(stopped, centre + offset / distance * gap, max(count, 2))
 
 
 def wait(trajectory: TrajectoryArg, at: WaypointArg, steps: int) -> Array:

@@ -73,6 +73,8 @@ def test_a_place_said_with_an_amount_word_is_no_amount():
     "words",
     [
         "pass between the chair and the table",
+        "keep a clear 1 between the robot and the table",  # the robot and an object (fresh-v)
+        "leave 0.3 between your gripper and the chair",
         "Keep a distance of at least 0.2 from the chair and the table",
         "weave left and right as you go",
         "Go up by 0.1 at a constant speed of 0.2",

@@ -28,6 +28,9 @@ def kept(words: str, step: str) -> list[str]:
         ("stay a full 0.4 away from the lamp", "t = move_away(t, detect_objects('lamp'))"),
         ("steer clear of the lamp by 0.4 or more", "t = pass_over(t, detect_objects('lamp'))"),  # fresh-r
         ("give the lamp a wider margin, 0.4 minimum", "t = move_away(t, detect_objects('lamp'))"),  # fresh-s
+        ("always leave 0.4 clear of the lamp", "t = move_away(t, detect_objects('lamp'))"),  # fresh-v
+        ("hold a good 0.4 clear of the lamp on the way", "t = move_closer(t, detect_objects('lamp'))"),
+        ("keep 0.4 between the gripper and the lamp", "t = move_away(t, detect_objects('lamp'))"),
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:

@@ -16,6 +16,10 @@ NAMES = ["fan", "box", "lamp"]
          "Don't come within 0.8 of the fan, and go slower as you pass by the fan"),
         ("approach the lamp, then keep clear of it", "approach the lamp, then keep clear of the lamp"),
         ("the box is in the way: fly over it", "the box is in the way: fly over the box"),
+        # of a distance from it (fresh-v)
+        ("leave the lamp alone; never get within 0.3 m of it", "leave the lamp alone; never get within 0.3 m of the lamp"),
+        ("the fan is loud, stay 1.5 away from it", "the fan is loud, stay 1.5 away from the fan"),
+        ("pass the box but keep 0.2 between the arm and it", "pass the box but keep 0.2 between the arm and the box"),
     ],
 )  # fmt: skip
 def test_it_after_a_word_of_place_is_the_object_named_before(words: str, plain: str) -> None:
@@ -30,6 +34,7 @@ def test_it_after_a_word_of_place_is_the_object_named_before(words: str, plain: 
         "go near the box and the lamp, then slow down past it",  # two objects before: which one?
         "speed up near it",  # no object named before
         "pass by it is what it does now near the fan",  # "by it is": a statement
+        "go 0.2 left of the box and keep the rest of it unchanged",  # "the rest of it": the path
     ],
 )
 def test_it_that_may_be_the_path_or_several_objects_stays(words: str) -> None:

@@ -225,10 +225,18 @@ PAIRING = re.compile(r"\b(?:between|of)\s+(?:the\s+)?[\w\s-]+$", re.I)
 """A piece that ends with the first of a pair of objects: "between the heron", "the midpoint of X"."""
 
 
+THE_ROBOT = re.compile(
+    r"\bbetween\s+(?:the\s+|your\s+|its\s+)?(?:robot|drone|arm|gripper|end\s+effector|tool|vehicle|craft"
+    r"|quadcopter|rover|path|route|trajectory|yourself|you|it|us)$",
+    re.I,
+)
+"""A pair whose first is the robot itself: "keep a clear metre between the robot *and the fan*"."""
+
+
 def _second_of_a_pair(previous: str, piece: str, names: Sequence[str]) -> bool:
-    """Whether ``previous`` ends "between <object>" and ``piece`` begins with the second object."""
+    """Whether ``previous`` ends "between <object or robot>" and ``piece`` begins with the second object."""
     ending = PAIRING.search(previous)
-    if ending is None or not names_in(ending.group(0), names):
+    if ending is None or not (names_in(ending.group(0), names) or THE_ROBOT.search(previous)):
         return False
     start = whole_words(piece)
     return any(

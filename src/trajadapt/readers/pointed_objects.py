@@ -17,11 +17,14 @@ from trajadapt.readers.words import longest_names, names_in
 PLACED_IT = re.compile(
     r"\b((?:pass(?:es|ing)?\s+)?(?:by|near|past|around|round|beside|alongside|over|above"
     r"|towards?|from|next\s+to|close\s+to|closer\s+to|nearer\s+to|away\s+from|clear\s+of|in\s+front\s+of"
-    r"|behind)\s+)it\b(?!\s*(?:is|was|'s)\b)",
+    r"|behind|between\s+(?:the\s+|your\s+)?(?:robot|drone|arm|gripper|end\s+effector|tool|vehicle|path|route)"
+    r"\s+and|within\s+(?:[\w.]+\s+){1,3}?of|\d\s*(?:m|cm|mm|metres?|meters?)?\s+(?:away\s+)?(?:from|of|off))\s+)it\b"
+    r"(?!\s*(?:is|was|'s)\b)",
     re.I,
 )
-""""it" after a word of place: "pass by it", "near it", "keep clear of it" (not "by it is": a new
-statement)."""
+""""it" after a word of place: "pass by it", "near it", "keep clear of it", or of a distance from it:
+"never come within 12 cm of it", "stay 0.3 from it", "at least 40 cm between the drone and it" (not
+"by it is": a new statement)."""
 
 
 def objects_for_it(words: str, names: Sequence[str]) -> str:

@@ -206,8 +206,8 @@ MINIMUM_DISTANCE = re.compile(
     rf"|\bclear\s+of\s+(?:[\w-]+\s+){{1,5}}?by(?=\s+{NUMBER_TEXT}\s+or\s+(?:more|further|farther|greater)\b)"
     r"|\b(?:berth|margin|clearance|gap|room|buffer|space|distance)\W+"
     rf"(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
-    rf"|\b(?:keep|stay|remain|hold)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid))?"
-    rf"(?=\s+{NUMBER_TEXT}\s+(?:away\s+)?(?:from|off)\b))\s*"
+    rf"|\b(?:keep|stay|remain|hold|leave|allow)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid|clear))?"
+    rf"(?=\s+{NUMBER_TEXT}\s+(?:(?:away\s+)?(?:from|off)|clear\s+of|between)\b))\s*"
     rf"({NUMBER_TEXT})",
     re.I,
 )

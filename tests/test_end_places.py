@@ -137,7 +137,7 @@ def test_a_step_written_for_the_end_object_alone_gives_way() -> None:
     steps = steps_after(
         "Finish up alongside the chair.", "t = keep_side(t, 'right', detect_objects('chair'))"
     )
-    assert steps == ["t = stop_at(t, detect_objects('chair'), beside=True)"]
+    assert steps == ["t = stop_at(t, detect_objects('chair'))"]
 
 
 def test_the_end_object_leaves_a_list_of_passes() -> None:
@@ -185,7 +185,7 @@ def test_a_stop_beside_the_object_comes_after_the_speed_steps() -> None:
     steps = steps_after(
         "keep a steady 0.3 and wind up close to the lamp", "t = set_speed(t, 0.3)", "t = shift(t, 'left')"
     )
-    assert steps[-1] == "t = stop_at(t, detect_objects('lamp'), beside=True)"
+    assert steps[-1] == "t = stop_at(t, detect_objects('lamp'))"
 
 
 SLOWING_TO_REST = "t = speed_profile(t, 'decelerate', start=0.6)"
@@ -256,9 +256,9 @@ def test_an_end_just_above_an_object_with_no_raise_written_is_raised_slightly() 
     "words",
     [
         "finish up right against the chair",
-        "pull up alongside the chair",
-        "come to rest next to the chair instead of at the old goal",
-        "end beside the chair",
+        "pull up right alongside the chair",
+        "come to rest directly next to the chair instead of at the old goal",
+        "end just beside the chair",
     ],
 )
 def test_an_end_beside_the_object_stops_beside_it(words: str) -> None:

@@ -3,10 +3,11 @@
 "Finish at the lamp", "wrap up at the red cup", "land on the mat", "set down at the cycle", "park at
 the box", "make the quill your end point": the path's end goes to the object, ``reach(t, lamp)``.
 "Stop where it comes closest to the chair": the path ends where it passes nearest the object,
-``stop_at(t, chair)``. "Wind up next to the chair", "end beside the sofa", "park right by the lamp":
-it ends there too, and where that pass is further from the object than a small gap it goes on to
-beside it, ``stop_at(t, chair, beside=True)`` (a ``stop_at`` of the object written for such words
-gets ``beside=True``; as "stop near the stinkhorn" is read). A small model answers such words with
+``stop_at(t, chair)``; so does "wind up next to the chair", "end beside the sofa" (as "stop near the
+stinkhorn" is read). "End right next to the chair", "park right by the lamp": it ends there too, and
+where that pass is further from the object than a small gap it goes on to beside it,
+``stop_at(t, chair, beside=True)`` (a ``stop_at`` of the object written for such words gets
+``beside=True``). A small model answers such words with
 a step for another job (a side kept, the end part shifted, the object put in a pass over a list) or
 with no step of the object at all.
 
@@ -102,6 +103,11 @@ BESIDE_PLACE = re.compile(
     _ENDING + r"(?:beside|next\s+to|near|nearby|by|close\s+to|alongside|adjacent\s+to|against)\b", re.I
 )
 """An ending verb with a word that puts the end beside the object: "wind up next to", "end beside"."""
+RIGHT_BESIDE = re.compile(r"\b(?:right|directly|exactly|squarely|just)\b|\bagainst\b", re.I)
+"""Words that put the end close beside the object ("end right next to", "finish right by", "park up
+against"): the end goes on to beside it. A plain "wrap up beside the sofa", "come to a stop by the
+bed" ends where the path passes nearest it (where the new-instruction sets were measured, 7 of 7
+judges of "right beside" read the object, 4 of 8 of a plain "beside" the path's nearest point)."""
 _END_NOUN = (
     r"(?:new\s+)?(?:end\s*-?\s*point|end|final\s+(?:point|position|spot|location|waypoint|destination|stop)"
     r"|finish(?:ing)?(?:\s+(?:point|line|spot))?|destination|goal|last\s+(?:point|waypoint|stop)"
@@ -169,7 +175,8 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
         place = _one_name(clause[found.end() :], names) if found else None
         if place is not None:
             above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
-            return AskedEnd(clause, place, skill, above=above, beside=pattern is BESIDE_PLACE)
+            beside = pattern is BESIDE_PLACE and bool(RIGHT_BESIDE.search(found.group(0)))
+            return AskedEnd(clause, place, skill, above=above, beside=beside)
     there = THERE_PLACE.search(clause)
     if there is not None and not NEGATION.search(clause[: there.start()]):
         inside = _gone_to(clause[: there.start()], names)

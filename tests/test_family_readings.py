@@ -86,13 +86,14 @@ def test_a_down_that_runs_to_a_stop_is_no_direction():
 
 
 @pytest.mark.parametrize(
-    "instruction",
-    ["Bring the robot to rest beside the lamp.", "Settle to rest right by the lamp."],
+    ("instruction", "kept"),
+    [
+        ("Bring the robot to rest beside the lamp.", "t = stop_at(t, detect_objects('lamp'))"),
+        ("Settle to rest right by the lamp.", "t = stop_at(t, detect_objects('lamp'), beside=True)"),
+    ],
 )
-def test_a_stop_at_an_object_said_as_rest_is_kept(instruction):
-    assert "t = stop_at(t, detect_objects('lamp'))" in steps_after(
-        instruction, "t = stop_at(t, detect_objects('lamp'))"
-    )
+def test_a_stop_at_an_object_said_as_rest_is_kept(instruction, kept):
+    assert kept in steps_after(instruction, "t = stop_at(t, detect_objects('lamp'))")
 
 
 @pytest.mark.parametrize(

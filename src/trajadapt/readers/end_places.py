@@ -175,7 +175,9 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
         place = _one_name(clause[found.end() :], names) if found else None
         if place is not None:
             above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
-            beside = pattern is BESIDE_PLACE and bool(RIGHT_BESIDE.search(found.group(0)))
+            beside = (
+                pattern is BESIDE_PLACE and found is not None and bool(RIGHT_BESIDE.search(found.group(0)))
+            )
             return AskedEnd(clause, place, skill, above=above, beside=beside)
     there = THERE_PLACE.search(clause)
     if there is not None and not NEGATION.search(clause[: there.start()]):

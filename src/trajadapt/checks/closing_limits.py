@@ -97,11 +97,7 @@ class Limit:
 
 def closing_limits(code: str, scene: Scene) -> list[Limit]:
     """The limits of the program's closing run of limit steps, in order ([] when one cannot be read)."""
-    try:
-        body = parse_code(code).body
-    except SyntaxError:
-        return []
-    steps = [s for s in body if not _passes_on(s)]
+    steps = _steps(code)
     limits: list[Limit] = []
     for statement in reversed(steps):
         call = statement.value if isinstance(statement, ast.Assign) else None
@@ -172,11 +168,7 @@ def earlier_clearances(code: str, scene: Scene) -> list[Limit]:
     (``reach`` of it, ``pass_through`` it) asks something of it that the program means instead, so
     that clearance is not kept.
     """
-    try:
-        body = parse_code(code).body
-    except SyntaxError:
-        return []
-    steps = [s for s in body if not _passes_on(s)]
+    steps = _steps(code)
     found: list[Limit] = []
     for index, statement in enumerate(steps):
         call, later = _call(statement), steps[index + 1 :]
@@ -189,6 +181,15 @@ def earlier_clearances(code: str, scene: Scene) -> list[Limit]:
         if limit is not None and not named & {n.casefold() for n in limit.names}:
             found.append(limit)
     return found
+
+
+def _steps(code: str) -> list[ast.stmt]:
+    """The statements that do something (not ``modified_trajectory = t``); [] if the code does not parse."""
+    try:
+        body = parse_code(code).body
+    except SyntaxError:
+        return []
+    return [s for s in body if not _passes_on(s)]
 
 
 def _step_name(statement: ast.stmt) -> str:

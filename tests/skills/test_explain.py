@@ -108,3 +108,14 @@ def test_the_session_explains_skills_itself_and_asks_the_model_otherwise(simple_
     )
     assert ast.parse(backend.requests[1].messages[0].content.split("CODE:")[1])  # the code is what was sent
     assert session.approve().to_dict()["explanation"] == {"source": "model", "lines": list(explanation.lines)}
+
+
+def test_a_held_pace_and_a_stop_beside_say_so() -> None:
+    lines = explain_code(
+        "t = get_trajectory()\nt = scale_speed(t, 0.5, near=detect_objects('lamp'), held=True)\n"
+        "t = stop_at(t, detect_objects('sofa'), beside=True)\nmodified_trajectory = t"
+    )
+    assert lines == [
+        "multiplies the speed by 0.5 near the lamp, held over the stretch nearest it, then fading",
+        "ends the path beside the sofa: from its waypoint nearest it straight on to beside it, speed 0 there",
+    ]

@@ -103,6 +103,9 @@ def explain_call(name: str, args: list[ast.expr], keywords: list[ast.keyword]) -
     words["ends"] = (
         "" if values.get("keep_start", True) and values.get("keep_goal", True) else ", ends included"
     )
+    if name == "stop_at" and values.get("beside"):
+        beside = "from its waypoint nearest it straight on to beside it, speed 0 there"
+        return f"ends the path beside {words['point']}: {beside}"
     if name in IN_A_PART and values.get("part") is not None:
         return IN_A_PART[name].format(span=_span(values["part"]), **words)
     return TEMPLATES[name].format(**words)
@@ -206,9 +209,10 @@ def _where(values: dict[str, Any]) -> str:
     where = []
     if near is not None:
         place = _place(near) if isinstance(near, tuple) else str(near)
-        where.append(
-            f"within {radius} of {place}" if radius is not None else f"near {place}, fading with distance"
+        fading = (
+            "held over the stretch nearest it, then fading" if values.get("held") else "fading with distance"
         )
+        where.append(f"within {radius} of {place}" if radius is not None else f"near {place}, {fading}")
     if part is not None:
         where.append(f"in the {part} part" if isinstance(part, str) else f"in the part {part}")
     return " and ".join(where) or "everywhere"

@@ -232,3 +232,8 @@ def test_two_closing_avoids_whose_clearances_overlap_are_held_together(clear: fl
     assert nearest(held, fan) >= clear - 1e-6 and nearest(held, bottle) >= clear - 1e-6
     if nearest(ran, fan) < clear - 1e-6:
         assert note is not None and f"the clearance {clear:g} from fan" in note
+
+
+def test_no_earlier_clearance_is_kept_where_a_later_step_goes_by_a_point_given_otherwise() -> None:
+    code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = move_closer(t, [0.0, 0.0, 0.3], 0.5)")
+    assert kept_clearances(code, SCENE) == ()

@@ -98,3 +98,17 @@ def test_the_held_zone_is_whole_by_the_object_and_nothing_far_from_it() -> None:
     assert weight[29] == weight[30] == 1.0
     assert weight[0] < 0.01 and weight[-1] < 0.01
     assert np.all(np.diff(weight[:30]) >= 0) and np.all(np.diff(weight[30:]) <= 0)
+
+
+def test_the_step_keeps_the_programs_own_variable() -> None:
+    code = "\n".join(
+        [
+            "traj = get_trajectory()",
+            "traj = scale_speed(traj, 0.5, near=detect_objects('kettle'))",
+            "modified_trajectory = traj",
+        ]
+    )
+    held_code, _ = hold_stated_paces(code, ["halve the speed near the kettle"], NAMES)
+    assert (
+        held_code.splitlines()[1] == "traj = scale_speed(traj, 0.5, near=detect_objects('kettle'), held=True)"
+    )

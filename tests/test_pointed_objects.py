@@ -35,6 +35,9 @@ def test_it_after_a_word_of_place_is_the_object_named_before(words: str, plain: 
         "speed up near it",  # no object named before
         "pass by it is what it does now near the fan",  # "by it is": a statement
         "go 0.2 left of the box and keep the rest of it unchanged",  # "the rest of it": the path
+        "go round the box and slow down over the last 2 m of it",
+        "pass the box, and keep the speed even within the first half of it",
+        "pass the lamp; the path is long, so cut 1 m off it",
     ],
 )
 def test_it_that_may_be_the_path_or_several_objects_stays(words: str) -> None:

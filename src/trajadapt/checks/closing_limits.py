@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from trajadapt.code_parse import SPEED_STEPS, detected_name, detected_names, parse_code
+from trajadapt.code_parse import SPEED_STEPS, detected_name, detected_names, objects_of, parse_code
 from trajadapt.model.geometry import Array, progress
 from trajadapt.model.scene import Scene
 from trajadapt.skills import bind_skills
@@ -166,12 +166,15 @@ def earlier_clearances(code: str, scene: Scene) -> list[Limit]:
     ``avoid(t, detect_objects('Dustbin'), 0.3)`` then ``reach(t, detect_objects('goal'))``, and the
     pull back to the goal brought the path 0.282 from the Dustbin. A later step on the same object
     (``reach`` of it, ``pass_through`` it) asks something of it that the program means instead, so
-    that clearance is not kept.
+    that clearance is not kept; nor is any where a later step goes by a point given as coordinates
+    or a variable (it may be that object).
     """
     steps = _steps(code)
     found: list[Limit] = []
     for index, statement in enumerate(steps):
         call, later = _call(statement), steps[index + 1 :]
+        if any(_unnamed_point(s) for s in later):
+            break  # a later step goes by a point the code gives otherwise: which object it is, is unknown
         if call is None or _step_name(statement) != "avoid":
             continue
         if all(_step_name(s) in (*SPEED_STEPS, *LIMIT_STEPS) for s in later):
@@ -181,6 +184,19 @@ def earlier_clearances(code: str, scene: Scene) -> list[Limit]:
         if limit is not None and not named & {n.casefold() for n in limit.names}:
             found.append(limit)
     return found
+
+
+POINT_STEPS = (
+    "avoid", "move_away", "move_closer", "pass_through", "pass_over", "reach", "stop_at", "circle_around",
+    "append_segment", "scale_about",
+)  # fmt: skip
+"""Steps whose second argument is a point (or a list of points)."""
+
+
+def _unnamed_point(statement: ast.stmt) -> bool:
+    """Whether a step's point is given otherwise than by ``detect_objects`` (coordinates, a variable)."""
+    call = _call(statement)
+    return _step_name(statement) in POINT_STEPS and "" in objects_of(call)
 
 
 def _steps(code: str) -> list[ast.stmt]:

@@ -19,7 +19,7 @@ import ast
 import math
 from collections.abc import Iterable
 
-from trajadapt.code_parse import call_of, in_place_of, placed_near
+from trajadapt.code_parse import assigned_call, call_of, in_place_of, placed_near
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import stated_factor
 from trajadapt.readers.words import names_in, part_named
@@ -43,9 +43,11 @@ def hold_stated_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> 
         ]
         if not any(s is not None and math.isclose(s, factor, rel_tol=1e-3) for s in stated):
             continue
-        before = line.strip()
-        call.keywords.append(ast.keyword("held", ast.Constant(True)))
-        after = f"t = {ast.unparse(call)}"
+        parsed = assigned_call(line)
+        assert parsed is not None  # call_of found the call on this line
+        tree, held, _ = parsed
+        held.keywords.append(ast.keyword("held", ast.Constant(True)))
+        before, after = line.strip(), ast.unparse(tree)
         lines[index] = in_place_of(line, after)
         notes.append(f"`{before}` -> `{after}`: the words state the pace near {name}, so it holds there")
     return "\n".join(lines), notes

@@ -18,7 +18,9 @@ PLACED_IT = re.compile(
     r"\b((?:pass(?:es|ing)?\s+)?(?:by|near|past|around|round|beside|alongside|over|above"
     r"|towards?|from|next\s+to|close\s+to|closer\s+to|nearer\s+to|away\s+from|clear\s+of|in\s+front\s+of"
     r"|behind|between\s+(?:the\s+|your\s+)?(?:robot|drone|arm|gripper|end\s+effector|tool|vehicle|path|route)"
-    r"\s+and|within\s+(?:[\w.]+\s+){1,3}?of|\d\s*(?:m|cm|mm|metres?|meters?)?\s+(?:away\s+)?(?:from|of|off))\s+)it\b"
+    r"\s+and|within\s+(?:(?:about|roughly|around)\s+)?[\d.]+\s*(?:m|cm|mm|metres?|meters?)?\s+of"
+    r"|[\d.]+\s*(?:m|cm|mm|metres?|meters?)?\s+away\s+from"
+    r"|(?:stay|keep|remain|hold)\w*\s+(?:at\s+least\s+)?[\d.]+\s*(?:m|cm|mm|metres?|meters?)?\s+(?:from|off))\s+)it\b"
     r"(?!\s*(?:is|was|'s)\b)",
     re.I,
 )

@@ -285,8 +285,13 @@ def test_an_end_where_the_path_passes_nearest_stays_there(words: str) -> None:
     ]
 
 
+def straight_path() -> np.ndarray:
+    """41 waypoints from x = -1 to 1 at speed 1: 0.05 apart."""
+    return np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
+
+
 def test_a_stop_beside_the_object_goes_on_to_beside_it_from_the_nearest_pass() -> None:
-    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
+    path = straight_path()
     chair = np.array([0.0, 0.8, 0.0])
     nearest = stop_at(path, chair)
     beside = stop_at(path, chair, beside=True)
@@ -298,13 +303,14 @@ def test_a_stop_beside_the_object_goes_on_to_beside_it_from_the_nearest_pass() -
 
 
 def test_a_stop_beside_an_object_the_path_already_passes_close_to_is_the_plain_stop() -> None:
-    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
+    path = straight_path()
     chair = np.array([0.0, 0.1, 0.0])
     np.testing.assert_array_equal(stop_at(path, chair, beside=True), stop_at(path, chair))
 
 
 def test_the_way_on_to_beside_the_object_keeps_the_speed_the_path_had_there() -> None:
-    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.linspace(1.0, 2.0, 41)]
+    path = straight_path()
+    path[:, 3] = np.linspace(1.0, 2.0, 41)
     path[15:26, 3] = 0.5  # slowed by the object
     beside = stop_at(path, np.array([0.0, 0.8, 0.0]), beside=True)
     assert np.all(beside[21:-1, 3] == 0.5) and beside[-1, 3] == 0.0
@@ -315,6 +321,5 @@ def test_a_stop_beside_on_a_path_with_no_length_or_far_from_the_object_stays_bou
     np.testing.assert_array_equal(
         stop_at(still, np.array([0.5, 0.0, 0.0]), beside=True)[:, :3], still[:2, :3]
     )
-    path = np.c_[np.linspace(-1.0, 1.0, 41), np.zeros(41), np.zeros(41), np.ones(41)]
-    far = stop_at(path, np.array([0.0, 50.0, 0.0]), beside=True)
+    far = stop_at(straight_path(), np.array([0.0, 50.0, 0.0]), beside=True)
     assert len(far) <= 21 + 41

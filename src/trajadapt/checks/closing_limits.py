@@ -100,8 +100,7 @@ def closing_limits(code: str, scene: Scene) -> list[Limit]:
     steps = _steps(code)
     limits: list[Limit] = []
     for statement in reversed(steps):
-        call = statement.value if isinstance(statement, ast.Assign) else None
-        name = call.func.id if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) else ""
+        call, name = _call(statement), _step_name(statement)
         if name in SPEED_STEPS:
             continue  # a pace moves no waypoint: "keep 1 m from the fan, and slow down near the bottle"
         if name not in LIMIT_STEPS:

@@ -37,6 +37,7 @@ from trajadapt.checks.constraints import (
 )
 from trajadapt.checks.projection_ends import (
     broken_at_ends,
+    broken_by_the_code,
     ends_where_the_program_put_them,
     held_as_original,
     holding_kept_ends,
@@ -89,10 +90,11 @@ def project(
         DependencyNotInstalled: osqp or scipy is missing.
     """
     inherited = broken_at_ends(original, original, scene, constraints)
-    constraints = holding_kept_ends(trajectory, original, scene, constraints, inherited)
+    broken_ends = broken_by_the_code(trajectory, original, scene, constraints, inherited)
+    constraints = holding_kept_ends(trajectory, original, constraints, broken_ends)
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
-    ends = ends_where_the_program_put_them(trajectory, original, scene, constraints, inherited)
+    ends = ends_where_the_program_put_them(trajectory, constraints, broken_ends)
     compact = _keeping_what_it_can(
         trajectory[firsts], original, Problem(scene, constraints, tuple(kept), ends)
     )
@@ -119,6 +121,13 @@ class Problem:
     kept: Kept = ()
     ends: tuple[tuple[int, tuple[float, float, float]], ...] = ()
     """Ends held where the program put them: (0 or -1, position)."""
+
+    def pins(self, original: Array) -> list[tuple[int, Array]]:
+        """The ends held fixed, (0 or -1, position): those kept at the original's, those the program put."""
+        kept = ((0, self.constraints.keep_start), (-1, self.constraints.keep_goal))
+        return [(end, original[end, :3]) for end, keep in kept if keep] + [
+            (end, np.asarray(position)) for end, position in self.ends
+        ]
 
     def broken(self, trajectory: Array, original: Array) -> int:
         """How many constraints and kept clearances ``trajectory`` breaks."""
@@ -176,11 +185,8 @@ def _project_distinct(trajectory: Array, original: Array, problem: Problem) -> A
             break
     if problem.broken(projected, original):
         projected = _finish(projected, trajectory, original, problem)
-    for index, keep in ((0, problem.constraints.keep_start), (-1, problem.constraints.keep_goal)):
-        if keep:
-            projected[index, :3] = original[index, :3]  # exactly: the solver holds them to 1e-9
-    for index, position in problem.ends:
-        projected[index, :3] = position
+    for index, position in problem.pins(original):
+        projected[index, :3] = position  # exactly: the solver holds them to 1e-9
     result: Array = projected
     return result
 
@@ -212,10 +218,7 @@ def _push_into(trajectory: Array, original: Array, problem: Problem) -> Array:
         wanted = np.clip(distance, constraints.reach.minimum, constraints.reach.maximum)
         fixed[:, :3] = base + offsets * wanted / distance
     fixed[:, :3] = np.clip(fixed[:, :3], np.array(constraints.lower), np.array(constraints.upper))
-    for index, keep in ((0, constraints.keep_start), (-1, constraints.keep_goal)):
-        if keep:
-            fixed[index, :3] = original[index, :3]
-    for index, position in problem.ends:
+    for index, position in problem.pins(original):
         fixed[index, :3] = position
     return fixed
 
@@ -254,10 +257,7 @@ def _constraint_rows(around: Array, original: Array, problem: Problem) -> tuple[
     low, high = [], []
     lower = np.tile(np.array([_finite(v, -1e9) for v in constraints.lower], dtype=np.float64), count)
     upper = np.tile(np.array([_finite(v, 1e9) for v in constraints.upper], dtype=np.float64), count)
-    for index, keep, fixed in ((0, constraints.keep_start, 0), (count - 1, constraints.keep_goal, -1)):
-        if keep:  # the original's own end: the result may have another number of waypoints
-            lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = original[fixed, :3]
-    for end, position in problem.ends:
+    for end, position in problem.pins(original):  # the result may have another number of waypoints
         index = 0 if end == 0 else count - 1
         lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = position
     low.append(lower)

@@ -16,22 +16,28 @@ from trajadapt.model.geometry import Array
 from trajadapt.model.scene import Scene
 
 
-def holding_kept_ends(
+def broken_by_the_code(
     trajectory: Array,
     original: Array,
     scene: Scene,
     constraints: Constraints,
     inherited: set[tuple[str, int]],
+) -> set[int]:
+    """The ends (0, -1) where ``trajectory`` breaks a limit the original did not break there."""
+    return {end for _, end in broken_at_ends(trajectory, original, scene, constraints) - inherited}
+
+
+def holding_kept_ends(
+    trajectory: Array, original: Array, constraints: Constraints, broken: set[int]
 ) -> Constraints:
     """Also hold the start / goal where the code left them (at the original's), unless it broke a limit there.
 
     The smoothing would otherwise move an end nobody asked to move (a curve made rounder, then lifted
     back above the floor, started 0.04 away from where it started). A limit the original itself
     broke at that end (a path that starts below its floor, or beside an object closer than the
-    clearance; ``inherited``, from ``broken_at_ends`` of the original) is left alone: the projection
-    is for what the code broke.
+    clearance) is left alone: the projection is for what the code broke (``broken``, from
+    ``broken_by_the_code``).
     """
-    broken = {end for _, end in broken_at_ends(trajectory, original, scene, constraints) - inherited}
     tolerance = 1e-9 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
     kept = [
         float(np.linalg.norm(trajectory[index, :3] - original[index, :3])) <= tolerance
@@ -44,11 +50,7 @@ def holding_kept_ends(
 
 
 def ends_where_the_program_put_them(
-    trajectory: Array,
-    original: Array,
-    scene: Scene,
-    constraints: Constraints,
-    inherited: set[tuple[str, int]],
+    trajectory: Array, constraints: Constraints, broken: set[int]
 ) -> tuple[tuple[int, tuple[float, float, float]], ...]:
     """The ends the program moved and left within every limit: held there.
 
@@ -56,7 +58,6 @@ def ends_where_the_program_put_them(
     the floor's edge elsewhere had the smoothing carry the goal 0.185 further. The projection is
     for what the code broke: an end it placed and broke nothing at stays where it is.
     """
-    broken = {end for _, end in broken_at_ends(trajectory, original, scene, constraints) - inherited}
     held = ((0, constraints.keep_start), (-1, constraints.keep_goal))
     return tuple(
         (index, (float(trajectory[index, 0]), float(trajectory[index, 1]), float(trajectory[index, 2])))

@@ -235,7 +235,7 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
     elif end.skill == "stop_at" and not names_in(_other_clauses(clauses, end), [end.place]):
         lines, notes = _without_steps_for(lines, end, BESIDE_THE_STOP)  # the nearest pass as it was
     if end.beside:
-        lines, notes = _stopped_beside(lines, end), [*notes, *_beside_notes(lines, end)]
+        lines, notes = _stopped_beside(lines, end, notes)
     raised, step = _raised_end(lines, end, variable) if end.above else (lines, "")
     if raised != lines:
         said = end.clause.strip()
@@ -270,19 +270,17 @@ def _ended_there(
     return [*lines[:at], step, *lines[at:]], notes
 
 
-def _stopped_beside(lines: list[str], end: AskedEnd) -> list[str]:
-    """``lines`` with each ``stop_at`` of the end's object stopping beside it (``beside=True``)."""
-    return [_beside(line) if _plain_stop_at(line, end.place) else line for line in lines]
-
-
-def _beside_notes(lines: list[str], end: AskedEnd) -> list[str]:
-    """The notes of ``_stopped_beside``: one per step it changes."""
+def _stopped_beside(lines: list[str], end: AskedEnd, notes: list[str]) -> tuple[list[str], list[str]]:
+    """``lines`` with each ``stop_at`` of the end's object stopping beside it (``beside=True``), noted."""
     why = f"the words ask the end beside the {end.place} ({end.clause.strip()!r})"
-    return [
-        f"`{line.strip()}` -> `{_beside(line).strip()}`: {why}"
-        for line in lines
-        if _plain_stop_at(line, end.place)
-    ]
+    stopped, noted = [], list(notes)
+    for line in lines:
+        if _plain_stop_at(line, end.place):
+            beside = _beside(line)
+            noted.append(f"`{line.strip()}` -> `{beside.strip()}`: {why}")
+            line = beside
+        stopped.append(line)
+    return stopped, noted
 
 
 def _plain_stop_at(line: str, place: str) -> bool:

@@ -19,7 +19,7 @@ import ast
 import math
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, call_of, in_place_of, placed_near
+from trajadapt.code_parse import assigned_call, in_place_of, placed_near
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import stated_factor
 from trajadapt.readers.words import names_in, part_named
@@ -31,10 +31,12 @@ def hold_stated_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> 
     clauses = split_clauses(words, names)
     lines, notes = code.splitlines(), list[str]()
     for index, line in enumerate(lines):
-        call = call_of(line, ("scale_speed",))
-        name = placed_near(call)
-        factor = _factor(call)
-        if call is None or name is None or factor is None or factor == 1:
+        parsed = assigned_call(line)
+        if parsed is None or parsed[2] != "scale_speed":
+            continue
+        tree, call, _ = parsed
+        name, factor = placed_near(call), _factor(call)
+        if name is None or factor is None or factor == 1:
             continue
         if any(k.arg in ("radius", "held") for k in call.keywords):
             continue
@@ -43,20 +45,15 @@ def hold_stated_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> 
         ]
         if not any(s is not None and math.isclose(s, factor, rel_tol=1e-3) for s in stated):
             continue
-        parsed = assigned_call(line)
-        assert parsed is not None  # call_of found the call on this line
-        tree, held, _ = parsed
-        held.keywords.append(ast.keyword("held", ast.Constant(True)))
+        call.keywords.append(ast.keyword("held", ast.Constant(True)))
         before, after = line.strip(), ast.unparse(tree)
         lines[index] = in_place_of(line, after)
         notes.append(f"`{before}` -> `{after}`: the words state the pace near {name}, so it holds there")
     return "\n".join(lines), notes
 
 
-def _factor(call: ast.Call | None) -> float | None:
+def _factor(call: ast.Call) -> float | None:
     """The factor a ``scale_speed`` call writes as a plain number (second argument or ``factor=``)."""
-    if call is None:
-        return None
     node = next(
         (k.value for k in call.keywords if k.arg == "factor"), call.args[1] if len(call.args) > 1 else None
     )

@@ -128,10 +128,14 @@ def bump(trajectory: Array) -> Array:
     return np.sin(np.pi * progress(trajectory)) ** 2
 
 
-def proximity(trajectory: Array, point: Array, radius: float) -> Array:
-    """1 at the waypoint nearest to ``point``, falling smoothly to 0 over ``radius`` beyond that."""
+def proximity(trajectory: Array, point: Array, radius: float, edge: float | None = None) -> Array:
+    """1 at the waypoint nearest to ``point``, falling smoothly to 0 over ``radius`` beyond that.
+
+    ``edge``: the distance from ``point`` within which the weight is 1 (the closest pass if None).
+    """
     distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
-    relative = (distance - distance.min()) / max(radius, 1e-12)
+    start = distance.min() if edge is None else edge
+    relative = np.clip(distance - start, 0.0, None) / max(radius, 1e-12)
     weight: Array = np.exp(-(relative**2) * 3.0)
     return weight
 

@@ -53,17 +53,16 @@ def stop_at(trajectory: TrajectoryArg, point: PointArg, *, beside: bool = False)
     t = as_trajectory(trajectory)
     k = max(nearest_index(t, point), 1)
     stopped = t[: k + 1].copy()
-    centre, gap = as_point(point), BESIDE_GAP * extent(t)
-    offset = stopped[-1, :3] - centre
-    distance = float(np.linalg.norm(offset))
-    step = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).mean())
-    if not beside or distance <= gap or step <= 1e-12:
-        stopped[-1, 3] = 0.0
-        return stopped
-    count = int(
-        np.clip(np.ceil((distance - gap) / step), 2, len(t))
-    )  # spaced as the path, at most its length
-    return append_segment(stopped, centre + offset / distance * gap, count)  # on at the speed it had there
+    if beside:
+        centre, gap = as_point(point), BESIDE_GAP * extent(t)
+        offset = stopped[-1, :3] - centre
+        distance = float(np.linalg.norm(offset))
+        step = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).mean())
+        if distance > gap and step > 1e-12:  # spaced as the path, at most its length; on at the speed it had
+            count = int(np.clip(np.ceil((distance - gap) / step), 2, len(t)))
+            return append_segment(stopped, centre + offset / distance * gap, count)
+    stopped[-1, 3] = 0.0
+    return stopped
 
 
 def wait(trajectory: TrajectoryArg, at: WaypointArg, steps: int) -> Array:

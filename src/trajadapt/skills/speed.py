@@ -102,15 +102,13 @@ def held_zone(trajectory: Array, point: Array) -> Array:
     """1 over the stretch nearest ``point``, fading to 0 beyond it: where a stated pace holds.
 
     The stretch is the ``HELD_SHARE`` of waypoints nearest the point, cut at ``HELD_BEYOND`` of the
-    path's size past its closest pass; the weight fades (a Gaussian in the distance) within
-    ``HELD_FADE`` of the size past the stretch.
+    path's size past its closest pass; the weight fades as ``proximity`` fades within ``HELD_FADE``
+    of the size past the stretch.
     """
     distance = np.linalg.norm(trajectory[:, :3] - point, axis=1)
     size = extent(trajectory)
     edge = min(float(np.sort(distance)[int(HELD_SHARE * len(distance))]), distance.min() + HELD_BEYOND * size)
-    beyond = np.clip(distance - edge, 0.0, None) / (HELD_FADE * size)
-    weight: Array = np.exp(-(beyond**2) * 3.0)
-    return weight
+    return proximity(trajectory, point, HELD_FADE * size, edge)
 
 
 def latte_field(trajectory: Array, point: Array) -> Array:

@@ -141,3 +141,48 @@ def test_an_undirected_extension_gets_the_direction_said_after_the_goal(
 def test_an_extension_with_its_own_direction_is_left_to_the_flags(written: str) -> None:
     code, _ = read_against_words(program(written), ["after the goal, carry on 0.3 to the right"], [])
     assert written in code
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "don't end where it ends now; proceed another 0.3 up",
+        "keep driving an extra 0.3 upwards",
+        "once the arm gets to its current goal, carry on 0.3 further up",
+        "when you arrive at the present end point, press on a further 0.3 up",
+    ],
+)
+def test_going_on_by_a_further_amount_is_past_the_goal(words: str) -> None:
+    code, notes = read_against_words(program("t = extend(t, 0.3)"), [words], [])
+    assert code.splitlines()[1:-1] == ["t = extend(t, 0.3, direction='up')"]
+    assert any(note.reader == "past-the-goal" for note in notes)
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "continue more slowly near the vase",  # a pace, no further amount
+        "keep going another 0.3 towards the vase",  # an object: not a plain going on
+        "carry on along the same route",
+    ],
+)
+def test_going_on_without_a_further_amount_is_not_past_the_goal(words: str) -> None:
+    assert after_goal(words, NAMES).clauses == ()
+
+
+@pytest.mark.parametrize("shift", ["t = shift(t, 'left', 0.2)", "t = shift_goal(t, 'left')"])
+def test_a_shift_the_way_only_the_going_on_says_is_the_extension_twice(shift: str) -> None:
+    written = program("t = smooth(t)", shift, "t = extend(t, 0.2)")
+    code, notes = read_against_words(
+        written, ["smooth it out, and don't stop there: push on another 0.2 left"], []
+    )
+    assert code.splitlines()[1:-1] == ["t = smooth(t)", "t = extend(t, 0.2, direction='left')"]
+    assert any("left out" in note.message for note in notes)
+
+
+def test_a_shift_that_a_clause_before_the_goal_says_stays() -> None:
+    written = program("t = shift(t, 'left', 0.1)", "t = extend(t, 0.2)")
+    code, _ = read_against_words(
+        written, ["move the whole path 0.1 left, then keep going an extra 0.2 left"], []
+    )
+    assert code.splitlines()[1:-1] == ["t = shift(t, 'left', 0.1)", "t = extend(t, 0.2, direction='left')"]

@@ -115,3 +115,13 @@ def test_an_unsaid_shift_beside_shifts_that_make_every_said_direction_is_left_ou
     )
     assert code == CODE.format(step="t = shift(t, 'back', 0.5)")
     assert "names no such direction" in notes[0]
+
+
+def test_an_unsaid_shift_beside_an_extension_the_said_way_is_left_out() -> None:
+    code, notes = replace_unasked_shifts(
+        CODE.format(step="t = extend(t, 0.5, direction='left')\nt = shift(t, 'up')\nt = wait(t, 'goal', 2)"),
+        ["go on 0.5 further to the left past the end, then hover there for two waypoints"],
+        NAMES,
+    )
+    assert code == CODE.format(step="t = extend(t, 0.5, direction='left')\nt = wait(t, 'goal', 2)")
+    assert "names no such direction" in notes[0]

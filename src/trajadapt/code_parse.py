@@ -82,6 +82,16 @@ def direction_argument(call: ast.Call | None) -> str | None:
     return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
 
 
+def extension_direction(call: ast.Call | None) -> str | None:
+    """The canonical direction an ``extend`` call gives (third argument or ``direction=``), if a word."""
+    if call is None:
+        return None
+    node = next(
+        (k.value for k in call.keywords if k.arg == "direction"), call.args[2] if len(call.args) > 2 else None
+    )
+    return DIRECTION_SYNONYMS.get(str(node.value).strip().lower()) if isinstance(node, ast.Constant) else None
+
+
 def part_argument(call: ast.Call) -> str | None:
     """The part word a ``shift_part`` call names (its fourth argument or ``part=``), if a word."""
     node = next(

@@ -12,10 +12,12 @@ The clauses after the goal (``after_goal``) are the one that says so ("after rea
 PAST_THE_GOAL``) and, when those words open it, the clauses after it in the same sentence (or the
 next, after "First reach the goal.") until one speaks of the path as a whole or of its start; a
 clause that lengthens the path by no number ("extend it smoothly until it reaches the clock") is
-one too. When those clauses say to go to one scene object ("approach", "head to", "fly over to",
-"go straight for", "extend it to") and name no other, that object is the new end. When no ``append_segment``
-goes there, the steps written for those words leave the code and ``append_segment(t,
-detect_objects(<object>))`` is added as the last step (before a step that pauses or spirals there):
+one too, and so is one that goes on by a further amount and names no object ("don't stop at the
+current end: continue another 0.1 forward", ``words.GOES_FURTHER``). When those clauses say to go
+to one scene object ("approach", "head to", "fly over to", "go straight for", "extend it to") and
+name no other, that object is the new end. When no ``append_segment`` goes there, the steps written
+for those words leave the code and ``append_segment(t, detect_objects(<object>))`` is added as the
+last step (before a step that pauses or spirals there):
 
 - a step that moves the path by that object (``move_closer``, ``pass_over``, ``reach``, ``avoid``,
   ...; not a speed step, a pause or a spiral there), when no clause before the goal names it;
@@ -24,7 +26,10 @@ detect_objects(<object>))`` is added as the last step (before a step that pauses
 - a whole-path shift in a direction that only the after-goal clauses say ("above it"; not a
   lengthening clause, which may say the path's own: "move it left and lengthen it to the clock").
 
-Code that is not made of skill calls alone is left alone. A review note says what changed and why.
+Where those clauses go to no object, the one ``extend`` of the code goes the one direction they say,
+and a whole-path or goal shift that way that no clause before the goal says leaves the code (the
+extension written twice). Code that is not made of skill calls alone is left alone. A review note
+says what changed and why.
 """
 
 from __future__ import annotations
@@ -42,13 +47,14 @@ from trajadapt.code_parse import (
     called_name,
     detected_names,
     direction_argument,
+    extension_direction,
     in_place_of,
     on_object,
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
-from trajadapt.readers.words import PAST_THE_GOAL, SENTENCE_END, longest_names, names_in
+from trajadapt.readers.words import GOES_FURTHER, PAST_THE_GOAL, SENTENCE_END, longest_names, names_in
 from trajadapt.sandbox.api import GOAL_NAMES
 from trajadapt.skills import SKILL_NAMES
 
@@ -93,7 +99,7 @@ def after_goal(words: str, names: Iterable[str]) -> AfterGoal:
             if said is not None:
                 found.append(clause)
                 carrying = not clause[: said.start()].strip(" ,")
-            elif EXTENDING.search(clause):
+            elif EXTENDING.search(clause) or (GOES_FURTHER.search(clause) and not names_in(clause, names)):
                 found.append(clause)  # "extend it smoothly to the clock": this clause alone
                 carrying = False
             elif carrying and not WHOLE_PATH.search(clause):
@@ -116,7 +122,9 @@ def add_destination(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     asked_after = after_goal(words, names)
     place = asked_after.destination
     if program is not None and place is None:
-        return _directed_extension(lines, asked_after.clauses)
+        return _directed_extension(
+            lines, asked_after.clauses, _before_goal(words, names, asked_after.clauses)
+        )
     if program is None or place is None or any(_appends_to(line, place) for line in lines):
         return code, []
     before = _before_goal(words, names, asked_after.clauses)
@@ -136,25 +144,37 @@ def add_destination(code: str, asked: Iterable[str], names: Iterable[str]) -> tu
     return "\n".join([*kept[:at], step, *kept[at:], *lines[end:]]), notes
 
 
-def _directed_extension(lines: list[str], after: tuple[str, ...]) -> tuple[str, list[str]]:
-    """The lines with the one direction the after-goal clauses say given to the one ``extend`` of none.
+def _directed_extension(lines: list[str], after: tuple[str, ...], before: str) -> tuple[str, list[str]]:
+    """The one ``extend`` going the one direction the after-goal clauses say, and no shift that way too.
 
     "After reaching the end point, keep flying forward another 0.5" came back as ``extend(t, 0.5)``,
-    which goes on along the final heading, not forward.
+    which goes on along the final heading, not forward: it gets the direction. "Don't stop at the
+    current end: continue another 0.1 forward" came back as ``extend(t, 0.1)`` beside ``shift(t,
+    'front', 0.1)``: a shift of the whole path or of its goal the way only the going-on words say
+    (no clause before the goal says it) is the extension written twice, and leaves the code.
     """
     directions = said_directions(" ".join(after))
     extends = [(i, call) for i, line in enumerate(lines) if (call := call_of(line, ("extend",))) is not None]
-    if len(directions) != 1 or len(extends) != 1 or _directed(extends[0][1]):
+    if len(directions) != 1 or len(extends) != 1:
         return "\n".join(lines), []
-    index, direction = extends[0][0], directions.pop()
-    parsed = assigned_call(lines[index])
-    assert parsed is not None
-    tree, found, _ = parsed
-    found.keywords.append(ast.keyword("direction", ast.Constant(direction)))
-    before, after_line = lines[index].strip(), ast.unparse(tree)
-    lines[index] = in_place_of(lines[index], after_line)
+    (index, call), direction = extends[0], directions.pop()
     said = ", ".join(repr(clause.strip()) for clause in after)
-    return "\n".join(lines), [f"`{before}` -> `{after_line}`: {said} go(es) on {direction} past the goal"]
+    notes = []
+    if not _directed(call):
+        parsed = assigned_call(lines[index])
+        assert parsed is not None
+        tree, found, _ = parsed
+        found.keywords.append(ast.keyword("direction", ast.Constant(direction)))
+        before_line, after_line = lines[index].strip(), ast.unparse(tree)
+        lines[index] = in_place_of(lines[index], after_line)
+        notes.append(f"`{before_line}` -> `{after_line}`: {said} go(es) on {direction} past the goal")
+    elif extension_direction(call) != direction:
+        return "\n".join(lines), notes
+    if direction in said_directions(before):
+        return "\n".join(lines), notes
+    twice = [i for i, line in enumerate(lines) if direction_argument(call_of(line, SHIFTS)) == direction]
+    notes += [f"left out `{lines[i].strip()}`: {said} go(es) on {direction} past the goal" for i in twice]
+    return "\n".join(line for i, line in enumerate(lines) if i not in twice), notes
 
 
 def _directed(call: ast.Call) -> bool:

@@ -40,6 +40,7 @@ from trajadapt.code_parse import (
     call_of,
     called_name,
     direction_argument,
+    extension_direction,
     in_place_of,
     parse_code,
     step_on_object,
@@ -128,7 +129,7 @@ def _asked_instead(lines: list[str], index: int, words: str, names: list[str]) -
 def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[list[str], list[str]]:
     """The code without the shift at ``index`` when the other steps make all the words ask.
 
-    That is when every direction the words name is made by another shift (none named: none to
+    That is when every direction the words name is made by another shift or extension (none named: none to
     make; "back the route up by 3" answered with a shift back and a shift up) and they move no part
     or end of the path (a part named for a pause or a pace, "halfway, stop and wait", moves
     nothing), and another step changes the path or its pace: the shift serves no clause (a guess
@@ -136,7 +137,11 @@ def _left_out_beside_others(lines: list[str], index: int, words: str) -> tuple[l
     """
     steps = [i for i, line in enumerate(lines) if called_name(line) not in (None, "get_trajectory")]
     moves_a_part = PART_OR_END.search(words) and MOVING.search(words)
-    made = {_shift_direction(lines[i]) for i in steps if i != index}
+    made = {
+        _shift_direction(lines[i]) or extension_direction(call_of(lines[i], ("extend",)))
+        for i in steps
+        if i != index
+    }
     if not said_directions(words) <= made or moves_a_part or steps == [index]:
         return lines, []
     before = lines[index].strip()

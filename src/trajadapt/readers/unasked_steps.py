@@ -22,7 +22,14 @@ from dataclasses import dataclass
 from trajadapt.model.scene import without_names
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.stop_words import COMING_TO_REST, STOPPING
-from trajadapt.readers.words import MINIMUM_DISTANCE, PAST_THE_GOAL, asks_distance, asks_pace, asks_visit
+from trajadapt.readers.words import (
+    GOES_FURTHER,
+    MINIMUM_DISTANCE,
+    PAST_THE_GOAL,
+    asks_distance,
+    asks_pace,
+    asks_visit,
+)
 
 
 @dataclass(frozen=True)
@@ -96,7 +103,9 @@ TOPICS = (
             "finally",
             "next",
         ),
-        also=lambda words: PAST_THE_GOAL.search(words) is not None,  # "once you are at the end point, ..."
+        also=lambda words: bool(
+            PAST_THE_GOAL.search(words) or GOES_FURTHER.search(words)
+        ),  # "once at the end"
     ),  # fmt: skip
     Topic(
         "a pause",

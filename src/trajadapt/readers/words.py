@@ -64,17 +64,29 @@ PART_OR_END = re.compile(
 first half"), so it does not ask the whole path to move."""
 
 
+_AS_IT_IS = r"(?:(?:current|present|existing|old|original|planned|usual|normal|actual)\s+)?"
+"""A word that says the goal as it is now ("the current end", "its present goal")."""
 PAST_THE_GOAL = re.compile(
-    r"\b(?:(?:after|past|beyond|once|upon)\b(?:\s+[\w']+){0,3}?\s+(?:the\s+)?(?:goal|end|destination|final)"
+    rf"\b(?:(?:after|past|beyond|once|upon)\b(?:\s+[\w']+){{0,3}}?\s+(?:the\s+|its\s+|your\s+)?{_AS_IT_IS}"
+    r"(?:goal|end|destination|final)"
     r"|(?:past|beyond)\s+where\s+(?:[\w']+\s+){0,3}?(?:ends|ended|stops|stopped|finishes|finished)"
     r"|(?:when\w*|as soon as|on|first)\s+(?:[\w']+\s+){0,2}?"
-    r"(?:reach\w*|arriv\w*(?:\s+at)?|get\w*\s+to|got\s+to|hit\w*|at)\s+(?:the\s+)?(?:goal|end|destination|final)"
+    rf"(?:reach\w*|arriv\w*(?:\s+at)?|get\w*\s+to|got\s+to|hit\w*|at)\s+(?:the\s+|its\s+|your\s+)?{_AS_IT_IS}"
+    r"(?:goal|end|destination|final)"
     r"|(?:goal|destination)(?:\s+\w+){0,2}?\s+(?:is|has been|was|gets)\s+reached)\b",
     re.I,
 )
 """Words that place a request after the path's goal: "after reaching the goal", "past the end", "once
 at the destination", "upon arrival at the goal", "when you get to the goal", "once the goal is
-reached", "past where the path currently ends"."""
+reached", "past where the path currently ends", "once you reach the current end"."""
+GOES_FURTHER = re.compile(
+    r"\b(?:continu\w*|carry\w*\s+on|keep\w*\s+(?:going|moving|flying|driving|rolling|on)|go(?:es|ing)?\s+on"
+    r"|push\w*\s+on|press\w*\s+on|proceed\w*|travel\w*\s+on)"
+    rf"(?:\s+[\w']+){{0,3}}?\s+(?:another|an\s+extra|a\s+further|{NUMBER_TEXT}\s*(?:[a-z]+\s+)?(?:further|farther|more))\b",
+    re.I,
+)
+"""Going on by a further amount ("continue another 0.1 forward", "keep going forward another 0.15",
+"carry on 0.2 further left"): in a clause that names no object, the path goes on past its goal."""
 
 
 PACE_PHRASES = re.compile(

@@ -11,7 +11,7 @@ import pytest
 
 from trajadapt.readers import read_against_words
 from trajadapt.readers.end_places import asked_end, end_at_asked_places
-from trajadapt.skills.events import BESIDE_GAP, stop_at
+from trajadapt.skills.events import BESIDE_GAP, WITHIN_SHARE, stop_at
 
 NAMES = ["lamp", "box", "chair", "red cup", "cup"]
 
@@ -323,3 +323,50 @@ def test_a_stop_beside_on_a_path_with_no_length_or_far_from_the_object_stays_bou
     )
     far = stop_at(straight_path(), np.array([0.0, 50.0, 0.0]), beside=True)
     assert len(far) <= 21 + 41
+
+
+@pytest.mark.parametrize(
+    ("words", "within"),
+    [
+        ("settle within 0.3 of the chair", 0.3),
+        ("land no further than 0.25 from the chair", 0.25),
+        ("come to a halt at most 0.2 away from the chair", 0.2),
+        ("wrap things up within roughly 0.5 of the chair", 0.5),
+    ],
+)
+def test_an_end_within_a_distance_of_the_object_stops_within_it(words: str, within: float) -> None:
+    asked = asked_end(words, NAMES)
+    assert asked is not None and asked.skill == "stop_at" and float(asked.within) == within
+    assert steps_after(words, "t = stop_at(t, detect_objects('chair'))") == [
+        f"t = stop_at(t, detect_objects('chair'), within={within!r})"
+    ]
+    assert (
+        steps_after(words, "t = shift(t, 'left')")[-1]
+        == f"t = stop_at(t, detect_objects('chair'), within={within!r})"
+    )
+
+
+@pytest.mark.parametrize(
+    "words", ["stay within 0.3 of the chair", "keep no more than 0.2 from the chair the whole way"]
+)
+def test_a_distance_kept_without_an_ending_word_asks_no_end(words: str) -> None:
+    assert asked_end(words, NAMES) is None
+
+
+def test_an_end_within_reach_already_there_comes_to_rest_when_the_words_say_so() -> None:
+    assert steps_after(
+        "bring the gripper to rest within 0.1 of the chair", "t = reach(t, detect_objects('chair'))"
+    ) == [
+        "t = reach(t, detect_objects('chair'))",
+        "t = speed_profile(t, 'decelerate', start=0.6)",
+    ]
+
+
+@pytest.mark.parametrize("within", [0.05, 0.1, 0.5, 2.0])
+def test_a_stop_within_a_distance_ends_inside_it_and_at_rest(within: float) -> None:
+    chair = np.array([0.0, 0.8, 0.0])
+    stopped = stop_at(straight_path(), chair, within=within)
+    gap = float(np.linalg.norm(stopped[-1, :3] - chair))
+    assert gap <= min(WITHIN_SHARE * within, BESIDE_GAP * 2.0) + 1e-9 or gap == pytest.approx(0.8)
+    assert gap < within or within > 0.8  # the path passes 0.8 from the chair: within 2 it stops there
+    assert stopped[-1, 3] == 0.0

@@ -91,6 +91,7 @@ def test_no_reader_imports_another_reader() -> None:
         "trajadapt.readers.height_words",
         "trajadapt.readers.least_distances",
         "trajadapt.readers.end_words",
+        "trajadapt.readers.end_place_words",
         "trajadapt.readers.stop_words",
         "trajadapt.readers.part_words",
         "trajadapt.readers.object_words",

@@ -119,3 +119,12 @@ def test_a_held_pace_and_a_stop_beside_say_so() -> None:
         "multiplies the speed by 0.5 near the lamp, held over the stretch nearest it, then fading",
         "ends the path beside the sofa: from its waypoint nearest it straight on to beside it, speed 0 there",
     ]
+
+
+def test_a_stop_within_a_distance_says_the_distance() -> None:
+    lines = explain_code(
+        "t = get_trajectory()\nt = stop_at(t, detect_objects('sofa'), within=0.3)\nmodified_trajectory = t"
+    )
+    assert lines == [
+        "ends the path within 0.3 of the sofa: from its waypoint nearest it straight on to beside it, speed 0 there"
+    ]

@@ -7,7 +7,8 @@ the box", "make the quill your end point": the path's end goes to the object, ``
 stinkhorn" is read). "End right next to the chair", "park right by the lamp": it ends there too, and
 where that pass is further from the object than a small gap it goes on to beside it,
 ``stop_at(t, chair, beside=True)`` (a ``stop_at`` of the object written for such words gets
-``beside=True``). A small model answers such words with
+``beside=True``); "come to rest within 0.4 of the person" ends beside it at most that far from it,
+``stop_at(t, person, within=0.4)`` (the words: ``end_place_words``). A small model answers such words with
 a step for another job (a side kept, the end part shifted, the object put in a pass over a list) or
 with no step of the object at all.
 
@@ -56,81 +57,28 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.end_place_words import (
+    ABOVE_PLACE,
+    AT_PLACE,
+    BESIDE_PLACE,
+    FINISHING,
+    NAMED_AS_END,
+    NEAREST_PLACE,
+    ONTO,
+    RIGHT_BESIDE,
+    THERE_PLACE,
+    WITHIN_PLACE,
+)
 from trajadapt.readers.paces import STOP_RAMP_START
-from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
-from trajadapt.readers.words import NUMBER_TEXT, longest_names, names_in
+from trajadapt.readers.stop_words import AT_REST
+from trajadapt.readers.words import longest_names, names_in
 from trajadapt.skills import SKILL_NAMES
 
-_NOT_A_NOUN = r"(?<!the\s)(?<!its\s)(?<!your\s)(?<!their\s)(?<!this\s)(?<!that\s)(?<!an\s)"
-_ENDING = (
-    rf"\b{_NOT_A_NOUN}(?:end(?:s|ed|ing)?|finish(?:es|ed|ing)?|terminat\w*|conclud\w*|arriv\w*"
-    r"|land(?:s|ed|ing)?|settl\w*|wrap(?:s|ped|ping)?\s+(?:it\s+|things\s+)?up|wind(?:s|ing)?\s+up|wound\s+up"
-    r"|come\s+to\s+rest|comes\s+to\s+rest|finish(?:es|ed|ing)?\s+up|end(?:s|ed|ing)?\s+up"
-    r"|set(?:s|ting)?\s+down|touch(?:es|ed|ing)?\s+down|park(?:s|ed|ing)?|pull(?:s|ed|ing)?\s+up"
-    rf"|{COMING_TO_REST.pattern})"
-    r"(?:\s+(?:with\s+)?(?:the\s+|its\s+|your\s+)?(?:path|route|trajectory|motion|run|flight|drive|journey"
-    r"|movement|robot|drone|arm|gripper|end\s+effector|tool|vehicle|it))?"
-    r"(?:\s+(?:exactly|right|directly|precisely|just|squarely|somewhere))?\s+"
-)
-AT_PLACE = re.compile(_ENDING + r"(?:at|on|onto|in|into|upon|over\s+at)\b", re.I)
-"""An ending verb with a word that puts the end on the object: "finish at", "land on"."""
-NEAREST_PLACE = re.compile(
-    r"\b(?:(?:stop|end|finish|halt|terminat)\w*(?:\s+(?:it|(?:the|its|your)\s+\w+))?(?:\s+short)?"
-    r"|cut\w*\s+(?:it|(?:the|its|your)\s+\w+)\s+short)\s+"
-    r"(?:(?:at|in)\s+the\s+(?:point|spot|place|position)\s+)?where\s+(?:it|the\s+\w+(?:\s+\w+)?)\s+"
-    r"(?:gets|comes|passes|is|goes|runs|swings|flies|drives)\s+(?:(?:the|its)\s+)?(?:closest|nearest)\s+to\b",
-    re.I,
-)
-"""An end where the path passes nearest an object: "end the motion where the arm gets closest to",
-"stop the path where it comes closest to", "stop at the spot where it passes closest to"."""
 NEGATION = re.compile(r"\b(?:not|never|no)\b|n't\b", re.I)
 """A negation before "end there" ("but don't finish there"): no end there."""
-THERE_PLACE = re.compile(
-    rf"\b{_NOT_A_NOUN}(?:end|finish|terminat|conclud|land|park|settl)\w*(?:\s+(?:it|things))?(?:\s+up)?"
-    r"\s+(?:(?:right|exactly|just)\s+)?there\b(?!\s+for\b)",
-    re.I,
-)
-"""An ending verb with "there": "bring it to the mug and end there", "finish right there" (a rest
-"there", "come to a stop there", rests where the end already is, or where the path passes)."""
-ABOVE_PLACE = re.compile(
-    _ENDING + rf"(?:(?:about|roughly|around|approximately|some)\s+)?(?P<amount>{NUMBER_TEXT})?\s*"
-    r"(?:(?:directly|right|just|straight|exactly)\s+)?(?:above|over)\b",
-    re.I,
-)
-"""An ending verb with a height over the object: "finish about 0.1 directly above", "end just above"
-(lengths are in metres by now: ``read_against_words`` read "10 cm" as 0.1)."""
-BESIDE_PLACE = re.compile(
-    _ENDING + r"(?:beside|next\s+to|near|nearby|by|close\s+to|alongside|adjacent\s+to|against)\b", re.I
-)
-"""An ending verb with a word that puts the end beside the object: "wind up next to", "end beside"."""
-RIGHT_BESIDE = re.compile(r"\b(?:right|directly|exactly|squarely|just)\b|\bagainst\b", re.I)
-"""Words that put the end close beside the object ("end right next to", "finish right by", "park up
-against"): the end goes on to beside it. A plain "wrap up beside the sofa", "come to a stop by the
-bed" ends where the path passes nearest it (where the new-instruction sets were measured, 7 of 7
-judges of "right beside" read the object, 4 of 8 of a plain "beside" the path's nearest point)."""
-_END_NOUN = (
-    r"(?:new\s+)?(?:end\s*-?\s*point|end|final\s+(?:point|position|spot|location|waypoint|destination|stop)"
-    r"|finish(?:ing)?(?:\s+(?:point|line|spot))?|destination|goal|last\s+(?:point|waypoint|stop)"
-    r"|landing\s+(?:spot|point|place|site)|stopping\s+(?:point|place)|terminus)"
-)
-NAMED_AS_END = re.compile(
-    rf"\b(?:make|use|treat|have|set|take|let|choose|pick)\s+(?P<named>.+?)\s+(?:as\s+|be\s+|become\s+)?"
-    rf"(?:your|the|its|our|a)\s+{_END_NOUN}\b"
-    rf"|\b(?:your|the|its)\s+{_END_NOUN}\s+(?:is|should\s+be|will\s+be|must\s+be|becomes|being|=)\s+(?P<then>.+)",
-    re.I,
-)
-"""Words that make an object the end: "make the quill your end point", "the final position should be X"."""
 OPENING = re.compile(r"^\s*(?:(?:the|a|an|your|its|that|this)\s+)?", re.I)
 ALTERNATIVE = re.compile(r"\s*,?\s*(?:and|or|&|/)\s", re.I)
 """A second object joined to the first ("at the lamp or the box"): no one place."""
-FINISHING = re.compile(r"\b(?:to\s+(?:finish|end)|at\s+the\s+(?:very\s+)?end|in\s+the\s+end|finally)\b", re.I)
-ONTO = re.compile(
-    r"\b(?<!closer\s)(?<!nearer\s)(?<!close\s)(?<!closest\s)(?<!nearest\s)(?<!next\s)(?<!up\s)"
-    r"(?:onto|on\s+to|into|to|at|on)\s+",
-    re.I,
-)
-"""A clause that goes onto an object to finish ("bring the gripper down onto the soap to finish",
-"at the end go to the box"): the object is the end."""
 MOVES_THE_PATH = frozenset(SKILL_NAMES) - frozenset(SPEED_STEPS)
 BESIDE_THE_STOP = tuple(name for name in SKILL_NAMES if name not in ("stop_at", "reach"))
 """Steps on an object that move the path's nearest pass to it: beside an end where the path passes
@@ -148,6 +96,7 @@ class AskedEnd:
     at_rest: bool = False  # the words leave the robot at rest there
     above: str = ""  # a height over the object to end at: a number, or 'slightly' ("just above")
     beside: bool = False  # "end next to": a stop beside the object, not only where the path passes
+    within: str = ""  # "come to rest within 0.4 of": a stop beside it, at most that far from it
     named_before: str = ""  # for "end there": the clause before that names the object
 
 
@@ -168,17 +117,17 @@ def asked_end(clause: str, names: list[str], before: str = "") -> AskedEnd | Non
         (AT_PLACE, "reach"),
         (ABOVE_PLACE, "reach"),
         (BESIDE_PLACE, "stop_at"),
+        (WITHIN_PLACE, "stop_at"),
         (NEAREST_PLACE, "stop_at"),
     )
     for pattern, skill in places:
         found = pattern.search(clause)
         place = _one_name(clause[found.end() :], names) if found else None
-        if place is not None:
-            above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE and found else ""
-            beside = (
-                pattern is BESIDE_PLACE and found is not None and bool(RIGHT_BESIDE.search(found.group(0)))
-            )
-            return AskedEnd(clause, place, skill, above=above, beside=beside)
+        if found is not None and place is not None:
+            above = (found.group("amount") or "slightly") if pattern is ABOVE_PLACE else ""
+            within = found.group("within") if pattern is WITHIN_PLACE else ""
+            beside = bool(within) or (pattern is BESIDE_PLACE and bool(RIGHT_BESIDE.search(found.group(0))))
+            return AskedEnd(clause, place, skill, above=above, beside=beside, within=within)
     there = THERE_PLACE.search(clause)
     if there is not None and not NEGATION.search(clause[: there.start()]):
         inside = _gone_to(clause[: there.start()], names)
@@ -241,7 +190,7 @@ def end_at_asked_places(code: str, asked: Iterable[str], names: Iterable[str]) -
         said = end.clause.strip()
         notes.append(f"`{step}` after the end at the {end.place}: the words ask the end above it ({said!r})")
         lines = raised
-    if end.skill == "reach" and _rests_there(end, clauses, names) and not _ends_at_rest(lines):
+    if _rests_there(end, clauses, names) and not _ends_at_rest(lines):
         step = f"{variable} = speed_profile({variable}, 'decelerate', start={STOP_RAMP_START})"
         at = after_last_step(lines, SKILL_NAMES)
         lines = [*lines[:at], step, *lines[at:]]
@@ -257,26 +206,28 @@ def _ended_there(
     notes: list[str] = []
     if not names_in(_other_clauses(clauses, end), [end.place]):
         lines, notes = _without_steps_for(lines, end)
-    beside = ", beside=True" if end.beside else ""
+    beside = ", {}={!r}".format(*_beside_argument(end)) if end.beside else ""
     step = f"{variable} = {end.skill}({variable}, detect_objects({end.place!r}){beside})"
     at = after_last_step(
         lines, SKILL_NAMES if end.skill == "stop_at" else MOVES_THE_PATH
     )  # a stop stays last, before a pause there (which it would cut off)
     pauses = [i for i, line in enumerate(lines) if called_name(line) == "wait" and end.place in line]
     at = min([at, *pauses]) if end.skill == "stop_at" else at
-    how = "ends there" if end.skill == "reach" else "ends where it passes nearest it"
+    how = {"reach": "ends there", "stop_at": "ends where it passes nearest it"}[end.skill]
     said = end.clause.strip()
+    how = f"ends within {end.within} of it" if end.within else how
     notes.append(f"added `{step}`: the words ask the path to end at the {end.place} ({said!r}), so it {how}")
     return [*lines[:at], step, *lines[at:]], notes
 
 
 def _stopped_beside(lines: list[str], end: AskedEnd, notes: list[str]) -> tuple[list[str], list[str]]:
-    """``lines`` with each ``stop_at`` of the end's object stopping beside it (``beside=True``), noted."""
-    why = f"the words ask the end beside the {end.place} ({end.clause.strip()!r})"
+    """``lines`` with each ``stop_at`` of the end's object stopping beside it (or within), noted."""
+    how = f"within {end.within} of" if end.within else "beside"
+    why = f"the words ask the end {how} the {end.place} ({end.clause.strip()!r})"
     stopped, noted = [], list(notes)
     for line in lines:
         if _plain_stop_at(line, end.place):
-            beside = _beside(line)
+            beside = _beside(line, end)
             noted.append(f"`{line.strip()}` -> `{beside.strip()}`: {why}")
             line = beside
         stopped.append(line)
@@ -286,18 +237,24 @@ def _stopped_beside(lines: list[str], end: AskedEnd, notes: list[str]) -> tuple[
 def _plain_stop_at(line: str, place: str) -> bool:
     """Whether ``line`` is a ``stop_at`` of ``place`` alone that does not stop beside it yet."""
     call = call_of(line, ("stop_at",))
-    if call is None or any(k.arg == "beside" for k in call.keywords):
+    if call is None or any(k.arg in ("beside", "within") for k in call.keywords):
         return False
     return [name.casefold() for name in objects_of(call)] == [place.casefold()]
 
 
-def _beside(line: str) -> str:
-    """``line``'s ``stop_at`` with ``beside=True``."""
+def _beside(line: str, end: AskedEnd) -> str:
+    """``line``'s ``stop_at`` stopping beside the object (``beside=True``, or ``within=`` the distance)."""
     parsed = assigned_call(line)
     assert parsed is not None
     tree, call, _ = parsed
-    call.keywords.append(ast.keyword("beside", ast.Constant(True)))
+    name, value = _beside_argument(end)
+    call.keywords.append(ast.keyword(name, ast.Constant(value)))
     return in_place_of(line, ast.unparse(tree))
+
+
+def _beside_argument(end: AskedEnd) -> tuple[str, bool | float]:
+    """The keyword of a stop beside the end's object: ``within=<distance>`` where the words give one."""
+    return ("within", float(end.within)) if end.within else ("beside", True)
 
 
 def _other_clauses(clauses: list[str], end: AskedEnd) -> str:

@@ -13,7 +13,7 @@ import re
 COMING_TO_REST = re.compile(
     r"\b(?:(?:to|into|until|till)\s+(?:you\s+|it\s+)?(?:comes?\s+to\s+|reach(?:es)?\s+|gets?\s+to\s+)?"
     r"(?:a\s+|an\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"
-    r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,2}?to\s+(?:a\s+(?:\w+\s+)?)?rest\b(?!\s+(?:area|stop|room|of)\b)"
+    r"|(?:com(?:e|es|ing)|came|bring\w*|brought|get\w*|got|settl\w*)\s+(?:\w+\s+){0,3}?to\s+(?:a\s+(?:\w+\s+)?)?rest\b(?!\s+(?:area|stop|room|of)\b)"
     r"|(?:until|till)\s+the\s+\w+\s+(?:comes?\s+to|reach(?:es)?|gets?\s+to)\s+(?:a\s+)?(?:\w+\s+)?(?:stop|standstill|halt)\b"
     r"|until\s+(?:it|you|the\s+\w+)\s+(?:stops|halts)"
     r"|\b(?:end|ends|ending|ended|finish\w*)\s+(?:at|in|with)\s+(?:a\s+)?(?:(?!the\b)\w+\s+)?(?:stop|standstill|halt)\b"

@@ -41,20 +41,27 @@ def _index(t: Array, at: Any) -> int:
 
 BESIDE_GAP = 0.07
 """How far from an object (a share of the path's size) an end beside it stops."""
+WITHIN_SHARE = 0.8
+"""How much of a stated distance an end within it stops at ("within 0.4 of the person": 0.32 at most)."""
 
 
-def stop_at(trajectory: TrajectoryArg, point: PointArg, *, beside: bool = False) -> Array:
+def stop_at(
+    trajectory: TrajectoryArg, point: PointArg, *, beside: bool = False, within: float | None = None
+) -> Array:
     """End the trajectory at the waypoint nearest to point (later waypoints removed, velocity 0 there).
 
     ``beside`` (set by the readers for "end next to the sofa", "park right beside it"): where that
     waypoint is further than ``BESIDE_GAP`` of the path's size from the point, the path then goes
-    on in a straight line to that distance from it, on the side it comes from.
+    on in a straight line to that distance from it, on the side it comes from. ``within`` (set by the
+    readers for "come to rest within 0.4 of the person"): beside it, and at most ``WITHIN_SHARE`` of
+    that distance from it.
     """
     t = as_trajectory(trajectory)
     k = max(nearest_index(t, point), 1)
     stopped = t[: k + 1].copy()
-    if beside:
+    if beside or within is not None:
         centre, gap = as_point(point), BESIDE_GAP * extent(t)
+        gap = gap if within is None else min(gap, WITHIN_SHARE * abs(float(within)))
         offset = stopped[-1, :3] - centre
         distance = float(np.linalg.norm(offset))
         step = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).mean())

@@ -103,9 +103,11 @@ def explain_call(name: str, args: list[ast.expr], keywords: list[ast.keyword]) -
     words["ends"] = (
         "" if values.get("keep_start", True) and values.get("keep_goal", True) else ", ends included"
     )
-    if name == "stop_at" and values.get("beside"):
+    if name == "stop_at" and (values.get("beside") or values.get("within") is not None):
         beside = "from its waypoint nearest it straight on to beside it, speed 0 there"
-        return f"ends the path beside {words['point']}: {beside}"
+        within = values.get("within")
+        where = "beside" if within is None else f"within {within} of"
+        return f"ends the path {where} {words['point']}: {beside}"
     if name in IN_A_PART and values.get("part") is not None:
         return IN_A_PART[name].format(span=_span(values["part"]), **words)
     return TEMPLATES[name].format(**words)

@@ -176,18 +176,30 @@ def test_a_pause_may_be_counted_in_waypoints(words: str, steps: int) -> None:
     ("words", "step"),
     [
         (
-            "when you reach the blue cup, stay still briefly",
-            "t = wait(t, detect_objects('vase'), 1)",
-        ),  # elsewhere
-        (
             "pause briefly beside the vase",
             "t = wait(t, detect_objects('vase'), 5)",
         ),  # a vague length read as 5
+        (
+            "halt at the vase for 4 steps",
+            "t = wait(t, detect_objects('Vase'), 4)",
+        ),  # the object, another case
     ],
 )
-def test_a_wait_at_another_place_or_a_vague_length_read_its_own_way_stays(words: str, step: str) -> None:
+def test_a_wait_as_asked_or_a_vague_length_read_its_own_way_stays(words: str, step: str) -> None:
     code = program(step)
     assert add_asked_pauses(code, [words], NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    ("words", "count"),
+    [
+        ("linger for a couple of beats beside the vase, and keep away from the cup", 2),
+        ("keep 0.3 from the cup; when you reach the vase, stay still briefly", 3),
+    ],
+)
+def test_a_wait_at_another_object_goes_to_the_object_the_pause_is_asked_at(words: str, count: int) -> None:
+    code, notes = add_asked_pauses(program("t = wait(t, detect_objects('cup'), 3)"), [words], NAMES)
+    assert code == program(f"t = wait(t, detect_objects('vase'), {count})") and "at the vase" in notes[0]
 
 
 def test_a_waypoint_named_as_a_place_is_no_count() -> None:

@@ -50,11 +50,11 @@ PAUSE_WORDS = re.compile(
 COUNT = re.compile(
     r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b"
     r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty|(?<=a\s)couple"
-    r"|(?<=a\s)few)\s+(?:of\s+)?waypoints?\b",
+    r"|(?<=a\s)few)\s+(?:of\s+)?(?:waypoints?|beats?|ticks?)\b",
     re.I,
 )
 """A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps",
-"3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place)."""
+"3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place), "a couple of beats"."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"
@@ -161,17 +161,21 @@ def _one_wait(lines: list[str]) -> tuple[int, ast.Module, ast.Call] | None:
 
 
 def _placed_as_asked(lines: list[str], notes: list[str], pause: AskedPause, words: str) -> None:
-    """The one ``wait`` at a part the words never name, at the object the pause is asked at.
+    """The one ``wait`` at a part the words never name, or at another object, at the pause's object.
 
     "When it gets alongside the ribbed toad, hold still for five waypoints" came back as ``wait(t,
-    'middle', 5)``: the example's place, not the user's.
+    'middle', 5)``: the example's place, not the user's; "pause next to the couch, and keep a metre
+    from the cupboard" as ``wait(t, detect_objects('cupboard'), 3)``: the object of another clause.
     """
     found = _one_wait(lines)
     if found is None or not pause.is_object:
         return
     index, tree, call = found
     place = call.args[1]
-    if not isinstance(place, ast.Constant) or _position_said(str(place.value), words):
+    if isinstance(place, ast.Constant):
+        if _position_said(str(place.value), words):
+            return
+    elif (waited := detected_name(place)) is None or waited.casefold() == pause.place.casefold():
         return
     before = lines[index].strip()
     call.args[1] = ast.Call(ast.Name("detect_objects", ast.Load()), [ast.Constant(pause.place)], [])

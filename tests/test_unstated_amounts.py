@@ -364,3 +364,33 @@ def test_a_made_up_speed_where_the_words_ask_a_pace_scales_by_that_pace(
 def test_a_speed_is_kept_where_the_words_give_it_or_ask_no_one_pace(instruction: str, step: str) -> None:
     code, _ = replace_unstated_amounts(START + step + END, [instruction])
     assert steps(code) == [step]
+
+
+@pytest.mark.parametrize(
+    ("words", "written"),
+    [
+        ("nudge the first half 0.05 to the left", "t = shift_part(t, 'left', 0.5, part='first half')"),
+        (
+            "take the final third at half the pace and drop it 0.02",
+            "t = shift_part(t, 'down', 0.5, part='end')",
+        ),
+        ("lift it 0.1 and halve the speed", "t = shift(t, 'up', 0.5)"),
+        ("hover for four waypoints, then move 0.2 back", "t = shift(t, 'back', 4)"),
+        ("go up by 0.3 halfway along", "t = shift(t, 'up', 0.5)"),
+    ],
+)
+def test_a_share_a_factor_or_a_count_is_no_length(words: str, written: str) -> None:
+    code, notes = replace_unstated_amounts(written, [words])
+    assert code != written and "no such number" in notes[0]
+
+
+@pytest.mark.parametrize(
+    ("words", "written"),
+    [
+        ("move the second half 0.5 up", "t = shift_part(t, 'up', 0.5, part='second half')"),
+        ("move half a metre left", "t = shift(t, 'left', 0.5)"),  # plain words say 0.5 by now; "half" too
+        ("pause 3 steps, then 3 cm up", "t = shift(t, 'up', 0.03)"),
+    ],
+)
+def test_a_length_said_beside_a_share_or_a_count_stays(words: str, written: str) -> None:
+    assert replace_unstated_amounts(written, [words]) == (written, [])

@@ -6,6 +6,8 @@ that direction its amount; a clause with several directions, each right after it
 further right and 0.05 lower"), gives each its number; a direction given two different amounts has
 none. A length with a metric
 unit is read in metres ("5 cm lower" is 0.05, "1 m further back" is 1), as a scene's own numbers are.
+The numbers that may be lengths at all (``stated_lengths``) leave out a share of the path, a half of
+something and a count.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ import re
 
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import directed_numbers, paired_amounts, said_directions
-from trajadapt.readers.words import NUMBER_TEXT
+from trajadapt.readers.words import NUMBER_TEXT, stated_numbers
 
 METRIC = re.compile(
     rf"(?<![\w.])({NUMBER_TEXT})\s*(cm|centimet(?:er|re)s?|mm|millimet(?:er|re)s?|m|met(?:er|re)s?)\b(?!\s*/)",
@@ -68,3 +70,27 @@ def direction_amounts(words: str) -> dict[str, float]:
             for direction, amount in paired.items():  # "10 cm further right and 5 cm lower"
                 amounts.setdefault(direction, []).append(amount)
     return {direction: found[0] for direction, found in amounts.items() if len(set(found)) == 1}
+
+
+_SHARE = r"(?:halves|half|thirds?|quarters?|fifths?)"
+NOT_LENGTHS = re.compile(
+    rf"\b(?:first|second|third|last|final|other|latter|former|opening|closing|initial|middle)\s+{_SHARE}"
+    rf"|\b(?:half|mid)\s*-?\s*way\b|\b(?:a|one|two|three|half)\s+{_SHARE}\s+of\s+(?:the|its|your)\b"
+    rf"|\bhalf\s+(?:of\s+)?(?:the|its|your|as|their|this)\b|\bhalv\w*"
+    rf"|\b(?:{NUMBER_TEXT}|one|two|three|four|five|six|seven|eight|nine|ten|a\s+couple\s+of|a\s+few|several)\s+"
+    r"(?:more\s+)?(?:time\s*)?(?:waypoints?|steps?|points?|beats?|ticks?|swings?"
+    r"|loops?|laps?|turns?|circles?|cycles?|oscillations?|wiggles?|zig\w*|waves?|bends?)\b",
+    re.I,
+)
+"""Numbers that are no length: a share of the path ("the second half", "the last third", "halfway"),
+a half of something ("half the speed", "halve it"), a count ("three waypoints", "four swings"). A
+multiple ("two times the distance") may scale a length, so it stays."""
+
+
+def stated_lengths(words: str) -> list[float]:
+    """The numbers of ``words`` that may be lengths: ``stated_numbers`` less those ``NOT_LENGTHS`` says.
+
+    >>> stated_lengths("raise the second half by 0.05 and pause for three steps")
+    [0.05]
+    """
+    return stated_numbers(NOT_LENGTHS.sub(" ", words))

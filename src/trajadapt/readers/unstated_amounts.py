@@ -4,8 +4,10 @@ Rule 3 of the prompt says to use the numbers the user gives and a vague word oth
 model writes ``shift(t, 'left', 0.2)`` for "go to the left": 0.2 is its guess, in units it cannot
 know (latte-dev's paths are 0.6 wide: a third of the scene). In skills code, a numeric literal passed
 where a skill takes a *distance* (an amount of movement: ``shift``'s amount, ``move_away``'s,
-``extend``'s distance, ...) that matches no number in the user's words (also read as cm or mm
-converted to m and back) is replaced by the intensity word the user did say ('a bit', 'a lot', ...),
+``extend``'s distance, ...) that matches no number in the user's words that may be a length (also
+read as cm or mm converted to m and back; a share of the path, a factor or a count is none:
+``clause_amounts.stated_lengths``, "raise the second half by 5 cm" answered with 0.5) is replaced by the
+intensity word the user did say ('a bit', 'a lot', ...),
 or removed so that the skill's calibrated default applies; so is an amount word passed as a distance
 where the words say none at all (``extend(t, 'a bit', 'back')`` for "move back some distance": an
 example's word, and no argument should come from an example), and a made-up ``radius`` of a speed
@@ -29,8 +31,16 @@ from collections.abc import Iterable
 
 from trajadapt.code_parse import assigned_call, in_place_of, profile_kind, signed_number
 from trajadapt.llm.answer_grammar import skill_parameters
+from trajadapt.readers.clause_amounts import stated_lengths
 from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, stated_factor
-from trajadapt.readers.words import FASTER, INTENSITY, SLOWER, intensity_word, is_stated, stated_numbers
+from trajadapt.readers.words import (
+    FASTER,
+    INTENSITY,
+    SLOWER,
+    intensity_word,
+    is_stated,
+    stated_numbers,
+)
 from trajadapt.skills import SKILLS
 
 BY_NAME = {function.__name__: function for function in SKILLS}
@@ -52,10 +62,10 @@ def is_stated_factor(value: float, numbers: list[float]) -> bool:
 def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with made-up distances replaced (see the module docstring), and a note per change."""
     words = " ".join(asked)
-    numbers, word = stated_numbers(words), intensity_word(words)
+    numbers, lengths, word = stated_numbers(words), stated_lengths(words), intensity_word(words)
     lines, notes = [], []
     for line in code.splitlines():
-        if _made_up_height(line, numbers):
+        if _made_up_height(line, lengths):
             notes.append(f"left out `{line.strip()}`: the instruction gives no such height")
             continue
         if (in_metres := _lengths_in_metres(line, numbers)) is not None:
@@ -64,7 +74,7 @@ def replace_unstated_amounts(code: str, asked: Iterable[str]) -> tuple[str, list
                 " unit (the scene is in metres)"
             )
             line = in_place_of(line, in_metres)
-        replaced = _replace_in_line(line, numbers, word)
+        replaced = _replace_in_line(line, lengths, word)
         changed, what = replaced if replaced is not None else (None, "number")
         used = repr(word) if word else "the default amount"
         if changed is None and (calibrated := _calibrate_factor(line, numbers, words)):

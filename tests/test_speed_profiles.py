@@ -24,7 +24,9 @@ def program(*steps: str) -> str:
         ("decelerate until the speed reaches 0", "decelerate"),
         ("start from a standstill and speed up", "accelerate"),
         ("pick up the pace from rest", "accelerate"),
+        ("drift to a standstill at the very end", "decelerate"),  # a stop with no word of slowing
         ("slow down near the box", None),  # a place, no stop
+        ("speed up to a halt of the jitter", None),  # faster: no slowing
         ("slow down until you stop at the box", None),  # a place to stop at
         ("go faster", None),
     ],
@@ -140,3 +142,29 @@ def test_a_part_where_a_height_is_held_is_not_the_pace_part(words: str) -> None:
     code = program("t = speed_profile(t, 'decelerate')")
     step = profile_paces(code, [words], NAMES)[0].splitlines()[1]
     assert step.startswith("t = scale_speed(t, 0.") and "part" not in step
+
+
+@pytest.mark.parametrize(
+    ("step", "words", "start"),
+    [
+        ("t = scale_speed(t, 0.5, part='second half')", "wind down to a full stop at the end", 0.5),
+        ("t = set_speed(t, 0.2, part='end')", "drift to a standstill over the final quarter", 0.75),
+        ("t = scale_speed(t, 0.65, part='final')", "ease it to a halt as it arrives", 0.7),
+    ],
+)
+def test_a_scale_of_the_closing_part_becomes_the_profile_from_that_part(
+    step: str, words: str, start: float
+) -> None:
+    code, notes = profile_paces(program(step), [words], NAMES)
+    assert (
+        code == program(f"t = speed_profile(t, 'decelerate', start={start:g})")
+        and "down to a stop" in notes[0]
+    )
+
+
+@pytest.mark.parametrize(
+    "step", ["t = scale_speed(t, 0.5, part='middle')", "t = scale_speed(t, 0.5, part='start')"]
+)
+def test_a_scale_of_another_part_stays_beside_a_stop_at_the_end(step: str) -> None:
+    code = program(step)
+    assert profile_paces(code, ["wind down to a full stop at the end"], NAMES) == (code, [])

@@ -25,6 +25,7 @@ import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import call_of, in_place_of, profile_kind, sole_speed_profile
+from trajadapt.model.geometry import PART_WORDS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import (
     STOP_RAMP_START,
@@ -68,8 +69,10 @@ def asked_profile(words: str, names: Iterable[str]) -> str | None:
         said = " ".join(c for c in (before, clause, after) if not names_in(c, names))
         if names_in(clause, names):
             continue
-        if SLOWER.search(clause) and TO_A_STOP.search(said):
-            asked.add("decelerate")
+        if (SLOWER.search(clause) and TO_A_STOP.search(said)) or (
+            TO_A_STOP.search(clause) and not FASTER.search(clause)
+        ):
+            asked.add("decelerate")  # "slow down ... to a full stop", "glide to a halt at the end"
         elif FASTER.search(clause) and FROM_REST.search(said):
             asked.add("accelerate")
     return asked.pop() if len(asked) == 1 else None
@@ -82,13 +85,16 @@ def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tupl
     code, notes = _one_scale_where_no_profile_is_said(code, words, names, notes)
     profile = asked_profile(words, names)
     lines = code.splitlines()
+    closing = {i: low for i, line in enumerate(lines) if (low := _closing_part_pace(line)) is not None}
     uniform = [i for i, line in enumerate(lines) if _whole_path_pace(line)]
+    uniform += list(closing) if profile == "decelerate" else []
     if profile is None or len(uniform) != 1:
         return code, notes
     index = uniform[0]
     call = call_of(lines[index], UNIFORM_STEPS)
-    assert call is not None  # found by _whole_path_pace
-    start = f", start={STOP_RAMP_START}" if profile == "decelerate" else ""
+    assert call is not None  # found by _whole_path_pace or _closing_part_pace
+    ramp = closing_share_start(words) or closing.get(index, STOP_RAMP_START)
+    start = f", start={ramp:g}" if profile == "decelerate" else ""
     target, trajectory = lines[index].split("=")[0].strip(), ast.unparse(call.args[0])
     step = f"{target} = speed_profile({trajectory}, {profile!r}{start})"
     ends = "runs down to a stop" if profile == "decelerate" else "starts from rest"
@@ -166,6 +172,19 @@ def _start_of(call: ast.Call) -> ast.expr | None:
     """Where a profile step was told to begin (its fourth argument or ``start=``), if it was."""
     given = call.args[3:4] + [k.value for k in call.keywords if k.arg == "start"]
     return given[0] if given else None
+
+
+def _closing_part_pace(line: str) -> float | None:
+    """Where a closing part begins (``part='end'``: 0.7), for a speed step of that part alone, else None.
+
+    A slowing to a stop written as a scale of the closing part is the profile from that share.
+    """
+    call = call_of(line, UNIFORM_STEPS)
+    if call is None or len(call.args) > 2 or [k.arg for k in call.keywords] != ["part"]:
+        return None
+    part = call.keywords[0].value
+    bounds = PART_WORDS.get(str(part.value).strip().lower()) if isinstance(part, ast.Constant) else None
+    return bounds[0] if bounds is not None and bounds[0] > 0 and bounds[1] == 1.0 else None
 
 
 def _whole_path_pace(line: str) -> bool:

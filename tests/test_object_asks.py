@@ -18,6 +18,10 @@ CODE = "t = get_trajectory()\n{step}\nmodified_trajectory = t"
         ("take it slowly near the red box", "red box", "slower", None),  # the longest name
         ("never pass to the left of the sofa", "sofa", "side", "right"),
         ("stay to the front of the box", "box", "side", "front"),
+        ("remain on the left-hand side of the sofa throughout", "sofa", "side", "left"),
+        ("drive on the right hand side of the red box", "red box", "side", "right"),
+        ("keep every waypoint behind the sofa", "sofa", "side", "back"),
+        ("don't ever go behind the lamp", "Lamp", "side", "front"),
         ("keep a smaller distance to the sofa", "sofa", "closer", None),
         ("give the lamp a wider berth", "Lamp", "away", None),
         ("ease off if the lamp is no more than 0.4 away", "Lamp", "slower", 0.4),

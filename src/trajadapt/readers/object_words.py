@@ -30,10 +30,10 @@ from trajadapt.readers.words import (
     names_in,
 )
 
-NOT_SIDE = re.compile(r"(?:\b(?:not|never|avoid)|n't)\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I)
-KEEP_SIDE = re.compile(
-    r"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?\b([a-z]+)\s+(?:side\s+)?of\b", re.I
-)
+_SIDE_OF = r"\b(?:([a-z]+)(?:[-\s]?hand)?\s+(?:side\s+)?of|(behind))\b"
+"""A side of an object: "right of", "left-hand side of", "front side of", "behind"."""
+NOT_SIDE = re.compile(rf"(?:\b(?:not|never|avoid)|n't)\b.*?{_SIDE_OF}", re.I)
+KEEP_SIDE = re.compile(rf"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?{_SIDE_OF}", re.I)
 WITHIN = re.compile(
     rf"\b(?:within|inside|(?:no|not)\s+(?:more|further|farther)\s+than|less\s+than)\s+({NUMBER_TEXT})"
     r"(?:\s*(?:m|metres?|meters?|units?))?(?:\s+(?:away|off))?",
@@ -112,7 +112,7 @@ def _visit(clause: str, name: str) -> ObjectAsk | None:
 def _side(clause: str) -> str:
     for pattern, flip in ((NOT_SIDE, True), (KEEP_SIDE, False)):
         found = pattern.search(clause)
-        word = DIRECTION_SYNONYMS.get(found.group(1).lower(), "") if found else ""
+        word = DIRECTION_SYNONYMS.get((found.group(1) or found.group(2)).lower(), "") if found else ""
         if word:
             return OPPOSITE_DIRECTIONS[word] if flip else word
     return ""

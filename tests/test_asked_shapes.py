@@ -25,6 +25,9 @@ def program(*steps: str) -> str:
         ("slalom your way to the goal", "t = zigzag(t)"),
         ("sway from side to side while flying", "t = zigzag(t)"),
         ("make the route serpentine", "t = zigzag(t)"),
+        ("sweep from side to side as you go", "t = zigzag(t)"),
+        ("let the drone oscillate sideways on its way", "t = zigzag(t)"),
+        ("meander towards the goal", "t = zigzag(t)"),
         ("give it a sinusoidal wobble", "t = zigzag(t)"),
         ("do three loops at some point", "t = spiral(t, turns=3)"),
         ("add a 360 on the way", "t = spiral(t)"),
@@ -42,6 +45,7 @@ def test_the_step_a_shape_clause_asks(clause: str, step: str) -> None:
     [
         "iron out the wiggles",  # a shape taken away
         "make it less wavy",
+        "no rocking from side to side, please",
         "go straight instead of weaving",
         "don't loop around the lamp",
         "pass close to the king snake",  # an object's name, not a weave

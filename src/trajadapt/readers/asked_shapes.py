@@ -42,11 +42,10 @@ from trajadapt.skills import SKILL_NAMES
 
 WEAVE = re.compile(
     r"\b(?:zig\s*-?\s*zag\w*|weav(?:e|es|ed|ing)|slalom\w*|snak(?:e|es|ed|ing)|wiggl(?:e|es|ed|ing)"
-    r"|serpentin\w*|sinusoid\w*|wavy|(?:swing|sway|swerv|veer|drift|mov|go|weav)\w*\s+(?:\w+\s+)?"
-    r"(?:from\s+)?side\s+to\s+side)\b",
+    r"|serpentin\w*|sinusoid\w*|wavy|oscillat\w*|undulat\w*|meander\w*|(?:from\s+)?side\s+to\s+side)\b",
     re.I,
 )
-"""Words that ask the path to swing sideways and back along the way."""
+"""Words that ask the path to swing sideways and back along the way ("sweep from side to side")."""
 LOOP = re.compile(
     r"\b(?<!half\s)(?<!half-)(?<!quarter\s)(?:loop(?:s|ed|ing)?|circl(?:e|es|ed|ing)|orbit\w*|spiral\w*"
     r"|full\s+(?:turn|revolution)|360)\b",

@@ -31,6 +31,9 @@ def kept(words: str, step: str) -> list[str]:
         ("always leave 0.4 clear of the lamp", "t = move_away(t, detect_objects('lamp'))"),  # fresh-v
         ("hold a good 0.4 clear of the lamp on the way", "t = move_closer(t, detect_objects('lamp'))"),
         ("keep 0.4 between the gripper and the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("maintain 0.4 of clearance from the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("give the lamp 0.4 of room on the way past", "t = move_away(t, detect_objects('lamp'))"),
+        ("leave 0.4 of space around the lamp", "t = move_away(t, detect_objects('lamp'))"),
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:

@@ -219,7 +219,9 @@ MINIMUM_DISTANCE = re.compile(
     r"|\b(?:berth|margin|clearance|gap|room|buffer|space|distance)\W+"
     rf"(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
     rf"|\b(?:keep|stay|remain|hold|leave|allow)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid|clear))?"
-    rf"(?=\s+{NUMBER_TEXT}\s+(?:(?:away\s+)?(?:from|off)|clear\s+of|between)\b))\s*"
+    rf"(?=\s+{NUMBER_TEXT}\s+(?:(?:away\s+)?(?:from|off)|clear\s+of|between)\b)"
+    r"|\b(?:keep|give|leave|allow|maintain|hold|with|have)\w*(?:\s+(?:the\s+)?[\w-]+){0,3}?"
+    rf"(?=\s+{NUMBER_TEXT}\s+(?:of\s+)?(?:clearance|room|space|berth|buffer|margin|gap|separation|standoff)\b))\s*"
     rf"({NUMBER_TEXT})",
     re.I,
 )
@@ -227,7 +229,7 @@ MINIMUM_DISTANCE = re.compile(
 closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
 between the negation and the comparison), "never come within 0.2", "a minimum clearance of 0.2", "a
 clearance of 0.2", "keep 0.4 from", "stay a full 1 away from", "clear of it by 0.1 or more", "0.15
-minimum", "1.5 at least"."""
+minimum", "1.5 at least", "keep 0.8 of clearance from", "give the lamp 0.3 of room"."""
 
 
 def whole_words(text: str) -> str:

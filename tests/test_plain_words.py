@@ -74,6 +74,11 @@ def test_numbers_that_are_no_distance_stay_in_words(words):
         ("swing wide of the kettle", "swing wide of the electric kettle"),
         ("Pass the mug on its left", "Pass the red mug on its left"),
         ("approach the kettles", "approach the electric kettle"),
+        (
+            "pass left of the electric kettle, then keep 0.2 from the kettle",
+            "pass left of the electric kettle, then keep 0.2 from the electric kettle",
+        ),  # the full name said before: the short one is the same object
+        ("slow near the Red Mug, then lift the mug", "slow near the Red Mug, then lift the red mug"),
     ],
 )
 def test_an_object_called_by_one_word_of_its_name_is_called_by_its_name(words, plain):

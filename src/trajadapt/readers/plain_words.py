@@ -190,26 +190,24 @@ def _amount_in_digits(found: re.Match[str]) -> str:
 
 
 def _full_names(words: str, names: Sequence[str]) -> str:
-    """``words`` with "the <word>" written as the one scene name that holds the word."""
+    """``words`` with "the <word>" written as the one scene name that holds the word.
+
+    Also where the full name is said too ("left of the mixing bowl, and no closer than 0.1 to the bowl").
+    """
     words = _names_as_spaced(words, names)
-    text = whole_words(words)
     owners: dict[str, list[str]] = {}
     for name in names:
         for word in set(whole_words(name).split()):
             owners.setdefault(word, []).append(name)
     for name in names:
         parts = whole_words(name).split()
-        if len(parts) < 2 or whole_words(name) in text:
-            continue
-        for index, part in enumerate(parts):
+        for index, part in enumerate(parts if len(parts) > 1 else ()):
             if len(part) < SHORTEST_NAME_WORD or part in NOT_OBJECT_WORDS or len(owners[part]) > 1:
                 continue
             rest = "".join(rf"(?:[\s_-]+{re.escape(word)}" for word in parts[index + 1 :])
             rest += ")?" * (len(parts) - index - 1)  # "the water spaniel": all of "Irish water spaniel"
             short = re.compile(rf"\b(the\s+){re.escape(part)}{rest}(?:s|es)?\b", re.I)
-            words, found = short.subn(_called(name), words)
-            if found:
-                break
+            words = short.sub(_called(name), words)  # the full name said already stays as said
     return words
 
 
@@ -232,8 +230,13 @@ def _names_as_spaced(words: str, names: Sequence[str]) -> str:
 
 
 def _called(name: str) -> Callable[[re.Match[str]], str]:
-    """The replacement of "the <word>" by "the <name>"."""
-    return lambda found: found.group(1) + name
+    """The replacement of "the <word>" by "the <name>" (the name said in full stays as said)."""
+    full = whole_words(name)
+    return lambda found: (
+        found.group(0)
+        if whole_words(found.group(0)[len(found.group(1)) :]) == full
+        else (found.group(1) + name)
+    )
 
 
 def _negations_as_asks(words: str, keep: Callable[[str], bool]) -> str:

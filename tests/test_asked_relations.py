@@ -67,3 +67,19 @@ def test_the_reader_runs_in_the_stage_and_names_itself() -> None:
     code, notes = read_against_words(program("t = scale_speed(t, 0.5)"), words, NAMES)
     assert code.splitlines()[1:-1] == ["t = scale_speed(t, 0.5)", "t = move_away(t, detect_objects('lamp'))"]
     assert [note.reader for note in notes] == ["asked-relations"]
+
+
+def test_a_clearance_whose_step_a_later_reader_left_out_gets_its_step_at_the_end() -> None:
+    written = "\n".join([
+        "t = get_trajectory()",
+        "t = stop_at(t, detect_objects('box'))",
+        "t = scale_speed(t, 0.4, near=detect_objects('box'))",
+        "modified_trajectory = t",
+    ])  # fmt: skip
+    words = "Arrive gently, decelerating to a stop at the end instead of at full speed, and keep at least 0.3 from the box throughout."
+    code, notes = read_against_words(written, [words], ["box", "lamp"])
+    assert code.splitlines()[1:-1] == [
+        "t = speed_profile(t, 'decelerate', start=0.6)",
+        "t = avoid(t, detect_objects('box'), 0.3)",
+    ]
+    assert notes[-1].reader == "relations-left"

@@ -108,7 +108,7 @@ def test_no_reader_imports_another_reader() -> None:
     reader_modules = {reader.read.__module__ for reader in READERS} - {"trajadapt.readers"}
     folder = PACKAGE / "readers"
     modules = {f"trajadapt.readers.{path.stem}" for path in folder.glob("*.py") if path.stem != "__init__"}
-    assert len(modules - helpers) == len(READERS)
+    assert len(modules - helpers) == len({id(reader.read) for reader in READERS})  # one may run twice
     for module in modules - helpers:
         found = imported(folder / f"{module.rsplit('.', 1)[1]}.py")
         assert not {m for m in found if m.startswith("trajadapt.readers")} - helpers, module

@@ -118,6 +118,8 @@ READERS: tuple[Reader, ...] = (
            lambda code, asked, _: count_as_asked(code, asked)),
     Reader("kept-ends", "an end of the path the words keep where it is, and steps that move it",
            lambda code, asked, _: keep_kept_ends(code, asked)),
+    Reader("relations-left", "a closer/further a clause asks whose step a later reader left out",
+           add_asked_relations),
 )  # fmt: skip
 """The stage's readers in run order; nothing else lists them."""
 

@@ -48,6 +48,7 @@ from trajadapt.readers.unasked_steps import leave_out_unasked
 from trajadapt.readers.unnamed_objects import leave_out_unnamed
 from trajadapt.readers.unstated_amounts import replace_unstated_amounts
 from trajadapt.readers.waypoint_counts import count_as_asked
+from trajadapt.readers.whole_way_paces import whole_way_paces
 
 ReadFunction = Callable[[str, Sequence[str], Sequence[str]], tuple[str, list[str]]]
 
@@ -108,6 +109,7 @@ READERS: tuple[Reader, ...] = (
     Reader("asked-paces", "a pace a clause asks (slower, faster, a stated speed) and no step makes",
            add_asked_paces),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
+    Reader("whole-way-paces", "a pace the words hold the whole way, written for one part", whole_way_paces),
     Reader("paced-places", "a move by an object the words only place a pace near",
            leave_out_moves_of_paced_places),
     Reader("speed-profiles", "a pace asked to run down to a stop or up from rest, written as one scale",

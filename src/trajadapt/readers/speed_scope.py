@@ -50,6 +50,7 @@ from trajadapt.readers.paces import asked_factor, part_said_for_the_pace, stated
 from trajadapt.readers.stop_words import COMING_TO_REST
 from trajadapt.readers.words import (
     ALL_ALONG,
+    EVEN_PACE,
     FASTER,
     PLACE_WORDS,
     SLOWER,
@@ -79,10 +80,6 @@ PART_UNPLACED = re.compile(
 )
 """Words naming a part that place no pace there: "slow down right from the start" (all of it), "slower
 than at the start" (a comparison)."""
-EVEN_PACE = re.compile(
-    r"\b(?:constant|steady|uniform|even|fixed|unchanging)\s+(?:\w+\s+)?(?:speed|pace|velocity)\b", re.I
-)
-"""An even pace the words state: with a move closer or away in the same clause, it holds the whole way."""
 KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
 """A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
 

@@ -383,3 +383,8 @@ ALL_ALONG = re.compile(
 )
 """Words that span the whole path ("from start to finish", "the whole way", "throughout"): the ends
 they name are no part of it."""
+EVEN_PACE = re.compile(
+    r"\b(?:constant|steady|uniform|even|fixed|unchanging)\s+(?:\w+\s+)?(?:speed|pace|velocity)\b", re.I
+)
+"""An even pace the words state ("a steady 0.4", "constant speed"): a clause about the pace, held the
+whole way beside a move closer or away in the same clause."""

@@ -254,3 +254,17 @@ def test_right_before_from_stresses_it() -> None:
 
 def test_a_number_before_right_makes_it_the_side() -> None:
     assert said_directions("shift it 0.2 right from here") == {"right"}
+
+
+@pytest.mark.parametrize(
+    ("words", "said"),
+    [
+        ("raise it, with the start left alone", {"up"}),
+        ("make both endpoints be left exactly where they are", set()),
+        ("the goal is left unchanged while the middle goes up", {"up"}),
+        ("turn left where the path bends", {"left"}),  # a verb of moving: the side
+        ("go left as it passes the box", {"left"}),
+    ],
+)
+def test_left_as_what_is_done_to_an_end_is_no_side(words: str, said: set[str]) -> None:
+    assert said_directions(words) == said

@@ -34,6 +34,14 @@ BACK_UP = re.compile(
     r"\bback(?:s|ed|ing)?\s+(?:(?:it|the\s+(?:whole\s+)?(?:path|route|trajectory|robot|arm))\s+)?up\b", re.I
 )
 """The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
+LEFT_AS_KEPT = re.compile(
+    r"\b((?:is|are|was|were|be|been|being|gets?|got|goal|start|end|point|position|pose|it|them|ends"
+    r"|endpoints?)\s+)left\b(?=\s+(?:where|alone|unchanged|untouched|intact|undisturbed|in\s+place"
+    r"|as\s+(?:it|they|is|are|was|were)|exactly|just|be)\b)",
+    re.I,
+)
+""""Left" as what is done to a thing, not the side: "with the goal left where it is", "the start is
+left alone" (not "turn left where the corridor ends")."""
 RIGHT_AS_STRESS = re.compile(
     r"\b(?<!turn )(?<!turns )(?<!turning )(?<!turned )(?<!veer )(?<!bear )(?<!steer )(?<!swerve )(?<!go )"
     r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"
@@ -105,11 +113,14 @@ def said_directions(words: str) -> set[str]:
     (``OF_SPEED``) are left out, and so is a word before a distance ("lower the clearance":
     ``OF_DISTANCE``). More or less of a height is up or down ("gain altitude", "at a greater
     height", "lose some height": ``MORE_HEIGHT``, ``LESS_HEIGHT``), and "back up", "reverse by 3" and
-    "retreat a little" are back (``BACK_UP``, ``REVERSING``).
+    "retreat a little" are back (``BACK_UP``, ``REVERSING``); "the goal left where it is" is no side
+    (``LEFT_AS_KEPT``).
     """
     text = PACE_PHRASES.sub(" slow ", DOWN_TO_REST.sub(" ", words.lower()))
     text = OF_DISTANCE.sub(" ", OF_SPEED.sub(" ", text))
-    text = BACK_UP.sub(" back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", text)))
+    text = BACK_UP.sub(
+        " back ", LESS_HEIGHT.sub(" down ", MORE_HEIGHT.sub(" up ", LEFT_AS_KEPT.sub(r"\1kept", text)))
+    )
     text = RIGHT_AS_STRESS.sub(
         " ", ENDING_UP.sub(" end ", REVERSING.sub(" back ", TO_AND_FRO.sub(" ", text)))
     )

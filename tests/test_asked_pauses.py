@@ -205,3 +205,8 @@ def test_a_wait_at_another_object_goes_to_the_object_the_pause_is_asked_at(words
 def test_a_waypoint_named_as_a_place_is_no_count() -> None:
     (pause,) = asked_pauses("hover at the middle waypoint for 5 timesteps", NAMES)
     assert pause.steps == 5
+
+
+def test_where_the_path_goes_on_to_after_the_pause_is_not_the_pause_place() -> None:
+    (pause,) = asked_pauses("halt by the vase, then wait 4 steps before heading on to the goal", NAMES)
+    assert (pause.place, pause.steps) == ("vase", 4)

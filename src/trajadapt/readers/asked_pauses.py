@@ -224,8 +224,19 @@ def _waits_at(place: ast.expr, pause: AskedPause) -> bool:
     return isinstance(place, ast.Constant) and str(place.value).strip().lower() == pause.place
 
 
+GOING_ON_AFTER = re.compile(
+    r"\b(?:before|then|and\s+then|until)\s+(?:\w+ing|carry|continue|move|head|go)\b.*$", re.I
+)
+"""Where the path goes on to after the pause ("hold still before carrying on to the same goal"): no
+place of the pause."""
+
+
 def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
-    """The one object the clause names, else the one part of the path it names, else None."""
+    """The one object the clause names, else the one part of the path it names, else None.
+
+    What follows the pause ("... before carrying on to the goal", ``GOING_ON_AFTER``) places nothing.
+    """
+    clause = GOING_ON_AFTER.sub("", clause)
     named = longest_names(names_in(clause, names))
     if len(named) == 1:
         return named[0], True

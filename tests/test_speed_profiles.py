@@ -27,6 +27,8 @@ def program(*steps: str) -> str:
         ("drift to a standstill at the very end", "decelerate"),  # a stop with no word of slowing
         ("slow down near the box", None),  # a place, no stop
         ("speed up to a halt of the jitter", None),  # faster: no slowing
+        ("bring the average speed down to 0.2 m/s", None),  # a speed, not zero
+        ("let the velocity reach 0.05 at the goal", None),
         ("slow down until you stop at the box", None),  # a place to stop at
         ("go faster", None),
     ],

@@ -38,8 +38,8 @@ from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, asks_pace, name
 
 TO_A_STOP = re.compile(
     rf"{COMING_TO_REST.pattern}"
-    r"|\b(?:(?:down\s+)?to\s+(?:zero|0)(?:\s+speed)?"
-    r"|(?:speed|velocity|pace)\s+(?:reaches|hits|becomes|is)\s+(?:zero|0))\b",
+    r"|\b(?:(?:down\s+)?to\s+(?:zero|0(?![.\d]))(?:\s+speed)?"
+    r"|(?:speed|velocity|pace)\s+(?:reaches|hits|becomes|is)\s+(?:zero|0(?![.\d])))\b",
     re.I,
 )
 """Where a slowing ends: at a stop."""

@@ -34,6 +34,9 @@ def kept(words: str, step: str) -> list[str]:
         ("maintain 0.4 of clearance from the lamp", "t = move_away(t, detect_objects('lamp'))"),
         ("give the lamp 0.4 of room on the way past", "t = move_away(t, detect_objects('lamp'))"),
         ("leave 0.4 of space around the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("keep the gripper 0.4 away from the lamp", "t = move_away(t, detect_objects('lamp'))"),
+        ("it must clear the lamp by 0.4", "t = move_away(t, detect_objects('lamp'))"),
+        ("min 0.4 separation from the lamp", "t = move_away(t, detect_objects('lamp'))"),
     ],
 )  # fmt: skip
 def test_a_step_short_of_the_stated_least_distance_becomes_the_clearance(words: str, step: str) -> None:

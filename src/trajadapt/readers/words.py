@@ -56,12 +56,12 @@ GOAL = re.compile(
 point"; "the final few points" are the end of the path)."""
 
 PART_OR_END = re.compile(
-    r"\b(?:start\w*|begin\w*|goal|end\w*|destination|target|finish|first|last|middle|half|halfway"
+    r"\b(?:start\w*|begin\w*|goal|end(?![\s-]*effector)\w*|destination|target|finish|first|last|middle|half|halfway"
     r"|cent(?:er|re)|waypoints?|points?|part|section|segment|portion)\b",
     re.I,
 )
 """Words that place a request at a part or an end of the path ("the start", "after the goal", "the
-first half"), so it does not ask the whole path to move."""
+first half"), so it does not ask the whole path to move ("the end effector" is the robot's, no end)."""
 
 
 _AS_IT_IS = r"(?:(?:current|present|existing|old|original|planned|usual|normal|actual)\s+)?"
@@ -212,15 +212,18 @@ MINIMUM_DISTANCE = re.compile(
     r"(?:\bat\s+least|(?:\bno|\bnever|\bnot|n't)\s+(?:[a-z']+\s+){0,5}?(?:closer|nearer|less)\s+than"
     r"|(?:\bno|\bnever|\bnot|n't)\s+(?:(?:ever|let\s+(?:it|the\s+\w+))\s+)?"
     r"(?:com|get|go|pass|mov|fly|flie|driv|be)\w*\s+within"
-    r"|\b(?:a\s+)?minimum\s+(?:of\s+)?"
+    r"|\b(?:a\s+)?(?:minimum|min\b\.?)\s+(?:of\s+)?"
     rf"(?:(?:clearance|distance|gap|margin|separation)\s+(?:of\s+)?)?"
     r"|\b(?:a|the)\s+(?:clearance|buffer|margin|berth|standoff)\s+of"
     rf"|\bclear\s+of\s+(?:[\w-]+\s+){{1,5}}?by(?=\s+{NUMBER_TEXT}\s+or\s+(?:more|further|farther|greater)\b)"
     r"|\b(?:berth|margin|clearance|gap|room|buffer|space|distance)\W+"
     rf"(?={NUMBER_TEXT}\s+(?:minimum|min\b|at\s+(?:the\s+)?(?:least|minimum)))"
-    rf"|\b(?:keep|stay|remain|hold|leave|allow)\w*(?:\s+(?:a|at))?(?:\s+(?:full|good|solid|clear))?"
+    r"|\bclear\w*\s+(?:[\w-]+\s+){1,4}?by(?=\s+" + NUMBER_TEXT + r")"
+    r"|\b(?:keep|stay|remain|hold|leave|allow)\w*"
+    r"(?:\s+(?:it|the\s+(?:robot|arm|drone|gripper|end\s+effector|tool|vehicle|path|route)))?"
+    rf"(?:\s+(?:a|at))?(?:\s+(?:full|good|solid|clear))?"
     rf"(?=\s+{NUMBER_TEXT}\s+(?:(?:away\s+)?(?:from|off)|clear\s+of|between)\b)"
-    r"|\b(?:keep|give|leave|allow|maintain|hold|with|have)\w*(?:\s+(?:the\s+)?[\w-]+){0,3}?"
+    r"|\b(?:(?:keep|give|leave|allow|maintain|hold|have)\w*|with)(?:\s+(?:the\s+)?[\w-]+){0,3}?"
     rf"(?=\s+{NUMBER_TEXT}\s+(?:of\s+)?(?:clearance|room|space|berth|buffer|margin|gap|separation|standoff)\b))\s*"
     rf"({NUMBER_TEXT})",
     re.I,
@@ -229,7 +232,8 @@ MINIMUM_DISTANCE = re.compile(
 closer than 0.2", "don't get nearer than 0.2", "never let it come closer than 0.2" (up to five words
 between the negation and the comparison), "never come within 0.2", "a minimum clearance of 0.2", "a
 clearance of 0.2", "keep 0.4 from", "stay a full 1 away from", "clear of it by 0.1 or more", "0.15
-minimum", "1.5 at least", "keep 0.8 of clearance from", "give the lamp 0.3 of room"."""
+minimum", "1.5 at least", "keep 0.8 of clearance from", "give the lamp 0.3 of room", "keep the arm 0.25
+away from", "clear the spoon by 0.1", "min 0.4 clearance"."""
 
 
 def whole_words(text: str) -> str:

@@ -210,3 +210,15 @@ def test_a_waypoint_named_as_a_place_is_no_count() -> None:
 def test_where_the_path_goes_on_to_after_the_pause_is_not_the_pause_place() -> None:
     (pause,) = asked_pauses("halt by the vase, then wait 4 steps before heading on to the goal", NAMES)
     assert (pause.place, pause.steps) == ("vase", 4)
+
+
+@pytest.mark.parametrize(
+    ("words", "place"),
+    [
+        ("before heading on, wait 3 steps at the vase", "vase"),
+        ("pause for 3 steps before passing the vase", "vase"),
+    ],
+)
+def test_words_before_the_pause_or_a_place_passed_still_place_it(words: str, place: str) -> None:
+    (pause,) = asked_pauses(words, NAMES)
+    assert (pause.place, pause.steps) == (place, 3)

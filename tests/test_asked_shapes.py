@@ -46,6 +46,8 @@ def test_the_step_a_shape_clause_asks(clause: str, step: str) -> None:
         "iron out the wiggles",  # a shape taken away
         "make it less wavy",
         "no rocking from side to side, please",
+        "slow down near the oscillating fan",  # an adjective
+        "keep the gripper level from side to side",  # no verb of swinging
         "go straight instead of weaving",
         "don't loop around the lamp",
         "pass close to the king snake",  # an object's name, not a weave

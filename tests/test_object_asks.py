@@ -286,3 +286,10 @@ def test_a_distance_asked_of_no_named_object_keeps_every_distance_step() -> None
     steps = "t = scale_speed(t, 0.6, near=detect_objects('Lamp'))\nt = move_away(t, detect_objects('Lamp'))"
     code = CODE.format(step=steps)
     assert replace_object_steps(code, ["slow down near the lamp and keep further from it"], NAMES)[0] == code
+
+
+@pytest.mark.parametrize(
+    "words", ["keep the sofa behind the robot at the end", "keep going with the lamp behind you"]
+)
+def test_something_else_behind_is_no_side_kept(words: str) -> None:
+    assert all(ask.relation != "side" for ask in object_asks(words, NAMES).values())

@@ -164,6 +164,7 @@ def test_going_on_by_a_further_amount_is_past_the_goal(words: str) -> None:
         "continue more slowly near the vase",  # a pace, no further amount
         "keep going another 0.3 towards the vase",  # an object: not a plain going on
         "carry on along the same route",
+        "continue for 3 more loops",  # a count, not a length
     ],
 )
 def test_going_on_without_a_further_amount_is_not_past_the_goal(words: str) -> None:

@@ -28,6 +28,8 @@ def program(*steps: str) -> str:
         ("slow down near the box", None),  # a place, no stop
         ("speed up to a halt of the jitter", None),  # faster: no slowing
         ("bring the average speed down to 0.2 m/s", None),  # a speed, not zero
+        ("never come to a stop", None),  # refused
+        ("halfway, come to a stop for 5 steps, then carry on", None),  # a pause on the way
         ("let the velocity reach 0.05 at the goal", None),
         ("slow down until you stop at the box", None),  # a place to stop at
         ("go faster", None),

@@ -38,6 +38,8 @@ def test_a_pace_held_the_whole_way_takes_the_whole_path(words: str, step: str, w
         ("drive slowly the whole way past the lamp", ("t = scale_speed(t, 0.6, part='middle')",)),  # an object
         ("keep 0.3 m/s the whole way", ("t = set_speed(t, 0.3, part='end')", "t = scale_speed(t, 0.5)")),  # two
         ("go at a steady 0.3 m/s in the middle", ("t = set_speed(t, 0.3, part='middle')",)),  # a part, not all of it
+        ("go slowly throughout the middle section", ("t = scale_speed(t, 0.5, part='middle')",)),  # a part too
+        ("keep a slow pace all the way through the final third", ("t = scale_speed(t, 0.5, part='end')",)),
     ],
 )  # fmt: skip
 def test_a_part_the_words_may_ask_stays(words: str, steps: tuple[str, ...]) -> None:

@@ -264,7 +264,18 @@ def test_a_number_before_right_makes_it_the_side() -> None:
         ("the goal is left unchanged while the middle goes up", {"up"}),
         ("turn left where the path bends", {"left"}),  # a verb of moving: the side
         ("go left as it passes the box", {"left"}),
+        ("push it left just a little", {"left"}),
+        ("move the goal left exactly 0.2", {"left"}),
+        ("move it left as it passes the box", {"left"}),
     ],
 )
 def test_left_as_what_is_done_to_an_end_is_no_side(words: str, said: set[str]) -> None:
     assert said_directions(words) == said
+
+
+@pytest.mark.parametrize("words", ["keep the end effector low", "move the end-effector left"])
+def test_the_end_effector_is_no_end_of_the_path(words: str) -> None:
+    from trajadapt.readers.words import PART_OR_END
+
+    assert PART_OR_END.search(words) is None
+    assert PART_OR_END.search("move the end left") is not None

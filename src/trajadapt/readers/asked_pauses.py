@@ -225,10 +225,12 @@ def _waits_at(place: ast.expr, pause: AskedPause) -> bool:
 
 
 GOING_ON_AFTER = re.compile(
-    r"\b(?:before|then|and\s+then|until)\s+(?:\w+ing|carry|continue|move|head|go)\b.*$", re.I
+    r"\b(?:before|then|and\s+then|until)\s+(?:carry\w*|continu\w*|mov\w*|head\w*|go\w*|driv\w*|fly\w*"
+    r"|resum\w*|proceed\w*)\s+(?:on|to|towards?|back)\b.*$",
+    re.I,
 )
 """Where the path goes on to after the pause ("hold still before carrying on to the same goal"): no
-place of the pause."""
+place of the pause (read after the pause's own words only)."""
 
 
 def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
@@ -236,7 +238,9 @@ def _place(clause: str, names: list[str]) -> tuple[str, bool] | None:
 
     What follows the pause ("... before carrying on to the goal", ``GOING_ON_AFTER``) places nothing.
     """
-    clause = GOING_ON_AFTER.sub("", clause)
+    pause = PAUSE_WORDS.search(clause)
+    after = GOING_ON_AFTER.search(clause, pause.end()) if pause else None
+    clause = clause[: after.start()] if after else clause
     named = longest_names(names_in(clause, names))
     if len(named) == 1:
         return named[0], True

@@ -42,7 +42,9 @@ from trajadapt.skills import SKILL_NAMES
 
 WEAVE = re.compile(
     r"\b(?:zig\s*-?\s*zag\w*|weav(?:e|es|ed|ing)|slalom\w*|snak(?:e|es|ed|ing)|wiggl(?:e|es|ed|ing)"
-    r"|serpentin\w*|sinusoid\w*|wavy|oscillat\w*|undulat\w*|meander\w*|(?:from\s+)?side\s+to\s+side)\b",
+    r"|serpentin\w*|sinusoid\w*|wavy|(?:swing|sway|swerv|veer|drift|mov|go|weav|sweep|rock|wander|oscillat"
+    r"|meander)\w*\s+(?:\w+\s+)?(?:from\s+)?side\s+to\s+side|meander(?:s|ed)?\b|meandering(?!\s+\w)|oscillat(?:e|es|ed|ing)"
+    r"\s+(?:sideways|laterally|across))\b",
     re.I,
 )
 """Words that ask the path to swing sideways and back along the way ("sweep from side to side")."""

@@ -35,13 +35,14 @@ BACK_UP = re.compile(
 )
 """The phrasal verb "back up" ("back the whole route up"): backwards, not up."""
 LEFT_AS_KEPT = re.compile(
-    r"\b((?:is|are|was|were|be|been|being|gets?|got|goal|start|end|point|position|pose|it|them|ends"
-    r"|endpoints?)\s+)left\b(?=\s+(?:where|alone|unchanged|untouched|intact|undisturbed|in\s+place"
-    r"|as\s+(?:it|they|is|are|was|were)|exactly|just|be)\b)",
+    r"\b((?:(?:is|are|was|were|be|been|being|gets?|got|stays?|remains?)"
+    r"|with\s+(?:the\s+|its\s+|both\s+)?(?:goal|start|end|ends|endpoints?|end\s+points?|final\s+\w+))\s+)left\b"
+    r"(?=\s+(?:(?:exactly|just)\s+)?(?:where|alone|unchanged|untouched|intact|undisturbed|in\s+place"
+    r"|as\s+(?:it|they)\s+(?:is|are|was|were))\b)",
     re.I,
 )
-""""Left" as what is done to a thing, not the side: "with the goal left where it is", "the start is
-left alone" (not "turn left where the corridor ends")."""
+""""Left" as what is done to an end, after a verb of being or "with the goal": "with the goal left where
+it is", "the start is left alone" (not "turn left where the corridor ends", "push it left just a bit")."""
 RIGHT_AS_STRESS = re.compile(
     r"\b(?<!turn )(?<!turns )(?<!turning )(?<!turned )(?<!veer )(?<!bear )(?<!steer )(?<!swerve )(?<!go )"
     r"(?<!move )(?<!shift )(?<!head )(?<!keep )(?<!stay )(?<!to the )(?<!the )(?<!to )"

@@ -30,8 +30,11 @@ from trajadapt.readers.words import (
     names_in,
 )
 
-_SIDE_OF = r"\b(?:([a-z]+)(?:[-\s]?hand)?\s+(?:side\s+)?of|(behind))\b"
-"""A side of an object: "right of", "left-hand side of", "front side of", "behind"."""
+_SIDE_OF = (
+    r"\b(?:([a-z]+)(?:[-\s]?hand)?\s+(?:side\s+)?of|(behind)(?=(?:\s+(?:the|an?))?\s*(?:$|\s{2}|[,.;:!?])))"
+)
+"""A side of an object: "right of", "left-hand side of", "front side of", "behind" it (its name, taken out
+of the clause, right after: not "keep the sofa behind the robot")."""
 NOT_SIDE = re.compile(rf"(?:\b(?:not|never|avoid)|n't)\b.*?{_SIDE_OF}", re.I)
 KEEP_SIDE = re.compile(rf"\b(?:stay|keep|remain|pass|go|drive|walk|fly)\w*\b.*?{_SIDE_OF}", re.I)
 WITHIN = re.compile(

@@ -8,8 +8,11 @@ the first when it asks slower and says where the slowing ends ("until you come t
 stop", "down to zero", "till the speed reaches 0", "to a standstill"), the second when it asks
 faster from a standstill ("from rest", "from zero"), said in the clause or the one before it;
 words that name a scene object ("slow down until you stop at the box") give a place, not a
-profile, and are left to the other readers. The one speed step that scales or sets the speed of
-the whole path (no ``near=``, no ``part=``) becomes the profile. A profile that goes the other way
+profile, and are left to the other readers; a clause that comes to a stop with no word of slowing
+("glide to a halt at the end"; not refused, not a stop on the way) asks the first too. The one speed
+step that scales or sets the speed of the whole path (no ``near=``, no ``part=``) becomes the
+profile; for a slowing, so does one of the closing part alone (``part='end'``, ``'second half'``),
+the profile starting where that part starts. A profile that goes the other way
 from the pace the words ask ("reduce the speed evenly as you come to the goal" answered with
 'constant' or 'accelerate') is turned to the asked one. And the other way: a slowing or speeding
 profile as the one speed step, where the one pace clause names no object, no part or end of the path,
@@ -43,6 +46,13 @@ TO_A_STOP = re.compile(
     re.I,
 )
 """Where a slowing ends: at a stop."""
+NEGATION = re.compile(r"\b(?:not|never|no|without)\b|n't\b", re.I)
+ON_THE_WAY = re.compile(
+    r"\b(?:halfway|midway|middle|for\s+(?:\d+|a\s+few|a\s+couple|some|a\s+while|a\s+moment)"
+    r"|then\s+(?:carry|continu|go|mov|resum|head)\w*)",
+    re.I,
+)
+"""A stop on the way, not at the end: a place or a length of the pause, or going on after it."""
 FROM_REST = re.compile(r"\bfrom\s+(?:a\s+)?(?:standstill|rest|zero|0|stop|stationary)\b", re.I)
 """Where a speeding up begins: at rest."""
 UNIFORM_STEPS = ("scale_speed", "set_speed")
@@ -69,13 +79,20 @@ def asked_profile(words: str, names: Iterable[str]) -> str | None:
         said = " ".join(c for c in (before, clause, after) if not names_in(c, names))
         if names_in(clause, names):
             continue
-        if (SLOWER.search(clause) and TO_A_STOP.search(said)) or (
-            TO_A_STOP.search(clause) and not FASTER.search(clause)
-        ):
+        if (SLOWER.search(clause) and TO_A_STOP.search(said)) or _stops_at_the_end(clause):
             asked.add("decelerate")  # "slow down ... to a full stop", "glide to a halt at the end"
         elif FASTER.search(clause) and FROM_REST.search(said):
             asked.add("accelerate")
     return asked.pop() if len(asked) == 1 else None
+
+
+def _stops_at_the_end(clause: str) -> bool:
+    """Whether a clause comes to a stop with no word of slowing ("glide to a halt at the end").
+
+    Not a stop refused ("never come to a halt") or one on the way ("halfway, stop for 5 steps").
+    """
+    said = TO_A_STOP.search(clause) and not FASTER.search(clause)
+    return bool(said) and not NEGATION.search(clause) and not ON_THE_WAY.search(clause)
 
 
 def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:

@@ -37,6 +37,7 @@ from trajadapt.readers.words import (
     FASTER,
     INTENSITY,
     SLOWER,
+    SPEED_UNIT,
     intensity_word,
     is_stated,
     stated_numbers,
@@ -222,10 +223,6 @@ def _made_up_speed(line: str, numbers: list[float], words: str) -> str | None:
     call.func = ast.Name("scale_speed", ast.Load())
     call.args[1] = ast.Constant(speed_factor(words, faster))
     return ast.unparse(tree)
-
-
-SPEED_UNIT = re.compile(r"/\s*s\b|\bper\s+sec\w*|\b(?:a|an|each)\s+second\b|\bmps\b", re.I)
-"""A unit of speed: the number before it is a speed, not a factor."""
 
 
 def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:

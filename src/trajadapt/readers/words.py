@@ -82,7 +82,8 @@ reached", "past where the path currently ends", "once you reach the current end"
 GOES_FURTHER = re.compile(
     r"\b(?:continu\w*|carry\w*\s+on|keep\w*\s+(?:going|moving|flying|driving|rolling|on)|go(?:es|ing)?\s+on"
     r"|push\w*\s+on|press\w*\s+on|proceed\w*|travel\w*\s+on)"
-    rf"(?:\s+[\w']+){{0,3}}?\s+(?:another|an\s+extra|a\s+further|{NUMBER_TEXT}\s*(?:[a-z]+\s+)?(?:further|farther|more))\b",
+    rf"(?:\s+[\w']+){{0,3}}?\s+(?:another|an\s+extra|a\s+further|{NUMBER_TEXT}\s*(?:[a-z]+\s+)?(?:further|farther|more))\b"
+    r"(?!\s+(?:times|loops?|laps?|turns?|circles?|steps?|timesteps?|waypoints?|swings?|cycles?|seconds?)\b)",
     re.I,
 )
 """Going on by a further amount ("continue another 0.1 forward", "keep going forward another 0.15",
@@ -392,3 +393,5 @@ EVEN_PACE = re.compile(
 )
 """An even pace the words state ("a steady 0.4", "constant speed"): a clause about the pace, held the
 whole way beside a move closer or away in the same clause."""
+SPEED_UNIT = re.compile(r"/\s*s\b|\bper\s+sec\w*|\b(?:a|an|each)\s+second\b|\bmps\b", re.I)
+"""A unit of speed: the number before it is a speed, not a factor."""

@@ -53,17 +53,18 @@ def stop_at(
     ``beside`` (set by the readers for "end next to the sofa", "park right beside it"): where that
     waypoint is further than ``BESIDE_GAP`` of the path's size from the point, the path then goes
     on in a straight line to that distance from it, on the side it comes from. ``within`` (set by the
-    readers for "come to rest within 0.4 of the person"): beside it, and at most ``WITHIN_SHARE`` of
-    that distance from it.
+    readers for "come to rest within 0.4 of the person"): where that waypoint is further than the
+    distance, on to beside it and at most ``WITHIN_SHARE`` of the distance from it.
     """
     t = as_trajectory(trajectory)
     k = max(nearest_index(t, point), 1)
     stopped = t[: k + 1].copy()
     if beside or within is not None:
         centre, gap = as_point(point), BESIDE_GAP * extent(t)
-        gap = gap if within is None else min(gap, WITHIN_SHARE * abs(float(within)))
         offset = stopped[-1, :3] - centre
         distance = float(np.linalg.norm(offset))
+        if within is not None and float(within) > 0:  # the nearest pass within it is enough
+            gap = distance if distance <= float(within) else min(gap, WITHIN_SHARE * float(within))
         step = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).mean())
         if distance > gap and step > 1e-12:  # spaced as the path, at most its length; on at the speed it had
             count = int(np.clip(np.ceil((distance - gap) / step), 2, len(t)))

@@ -9,7 +9,8 @@ any feedback) and changes the lines that contradict them, with a note that says 
 Readers share the word helpers of ``readers.words``, ``readers.object_words`` and
 ``readers.clause_amounts`` and the code helpers of ``trajadapt.code_parse``; no reader imports
 another. To add one: write a module here with a function ``(code, asked, names) -> (code, notes)``
-and put it in ``READERS`` where it must run.
+and put it in ``READERS`` where it must run. One function may run twice: ``relations-left`` runs
+asked-relations again after every other reader, for a clause whose step a later reader left out.
 """
 
 from __future__ import annotations

@@ -272,3 +272,19 @@ def test_a_whole_path_shift_beside_the_going_on_it_repeats_leaves() -> None:
     assert "t = shift(t, 'left', 0.5)" not in read.splitlines() and notes
     both = ["shift everything 0.5 left, then go on another 0.5 left past the goal"]
     assert scope_to_parts(code, both)[0] == code  # a clause with no part says left too
+
+
+@pytest.mark.parametrize(
+    ("words", "expected"),
+    [
+        ("raise the entire route by 0.3", "t = shift(t, 'up', 0.3)"),  # the whole path, ends included
+        ("bring all of the trajectory down 0.3", "t = lift_middle(t, 'up', 0.3)"),  # another direction: left
+        ("raise the route in an arc by 0.3", "t = lift_middle(t, 'up', 0.3)"),  # no whole path said
+        ("raise the whole path by 0.3, keeping the start and goal", "t = lift_middle(t, 'up', 0.3)"),
+    ],
+)
+def test_a_lift_of_the_middle_is_the_whole_path_s_shift_where_the_words_say_the_whole_path(
+    words: str, expected: str
+) -> None:
+    code, _ = scope_to_parts(CODE.format(step="t = lift_middle(t, 'up', 0.3)"), [words])
+    assert code == CODE.format(step=expected)

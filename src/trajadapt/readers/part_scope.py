@@ -238,6 +238,14 @@ def _stops_at_the_goal(lines: list[str], notes: list[str]) -> None:
         notes.append(f"left out `{line.strip()}`: the path ends at its goal already")
 
 
+WHOLE_PATH = re.compile(
+    r"\b(?:whole|entire|complete|full)\s+(?:path|route|trajectory|motion|movement|flight|run|thing|way)\b"
+    r"|\ball\s+of\s+(?:the\s+)?(?:path|route|trajectory|it)\b|\beverything\b",
+    re.I,
+)
+"""Words that move the path as a whole, ends included ("the whole trajectory", "all of it")."""
+
+
 def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
     """A move of the start or the goal where the words name no part or end: the whole path's move.
 
@@ -246,12 +254,14 @@ def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
     part='end')``. Where no word names a part or an end of the path (``words.PART_OR_END``: "the
     start", "the goal", "the end", "the first half", "waypoints"; "the bottom part" is a region of
     the scene, not of the path), a ``shift_goal`` / ``shift_start`` / ``shift_part`` in a direction
-    the words say is ``shift`` with its amount.
+    the words say is ``shift`` with its amount; so is a ``lift_middle`` (which keeps the ends) where
+    the words say the whole path ("lift the whole trajectory 15 cm", ``WHOLE_PATH``).
     """
     if PART_OR_END.search(REGION.sub(" ", words)):
         return
     said = said_directions(words)
-    for index, call in _calls(lines, ("shift_goal", "shift_start", "shift_part")):
+    whole = ("lift_middle",) if WHOLE_PATH.search(words) else ()  # "lift the whole trajectory 15 cm"
+    for index, call in _calls(lines, ("shift_goal", "shift_start", "shift_part", *whole)):
         if direction_argument(call) not in said:
             continue
         before = lines[index].strip()

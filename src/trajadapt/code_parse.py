@@ -82,21 +82,21 @@ def direction_argument(call: ast.Call | None) -> str | None:
     return DIRECTION_SYNONYMS.get(str(call.args[1].value).strip().lower())
 
 
+def named_argument(call: ast.Call, name: str, position: int) -> ast.expr | None:
+    """The argument a call passes as ``name=`` or at ``position``, if it passes one."""
+    keyword = next((k.value for k in call.keywords if k.arg == name), None)
+    return keyword if keyword is not None else call.args[position] if len(call.args) > position else None
+
+
 def extension_direction(call: ast.Call | None) -> str | None:
     """The canonical direction an ``extend`` call gives (third argument or ``direction=``), if a word."""
-    if call is None:
-        return None
-    node = next(
-        (k.value for k in call.keywords if k.arg == "direction"), call.args[2] if len(call.args) > 2 else None
-    )
+    node = None if call is None else named_argument(call, "direction", 2)
     return DIRECTION_SYNONYMS.get(str(node.value).strip().lower()) if isinstance(node, ast.Constant) else None
 
 
 def part_argument(call: ast.Call) -> str | None:
     """The part word a ``shift_part`` call names (its fourth argument or ``part=``), if a word."""
-    node = next(
-        (k.value for k in call.keywords if k.arg == "part"), call.args[3] if len(call.args) > 3 else None
-    )
+    node = named_argument(call, "part", 3)
     return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) else None
 
 

@@ -49,6 +49,7 @@ from trajadapt.code_parse import (
     direction_argument,
     extension_direction,
     in_place_of,
+    named_argument,
     on_object,
     skill_program,
 )
@@ -179,7 +180,7 @@ def _directed_extension(lines: list[str], after: tuple[str, ...], before: str) -
 
 def _directed(call: ast.Call) -> bool:
     """Whether an ``extend`` call gives a direction (third argument or ``direction=``)."""
-    return len(call.args) > 2 or any(keyword.arg == "direction" for keyword in call.keywords)
+    return named_argument(call, "direction", 2) is not None
 
 
 def _only_arrives(clause: str) -> bool:

@@ -29,7 +29,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of, profile_kind, signed_number
+from trajadapt.code_parse import assigned_call, in_place_of, named_argument, profile_kind, signed_number
 from trajadapt.llm.answer_grammar import skill_parameters
 from trajadapt.readers.clause_amounts import stated_lengths
 from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, stated_factor
@@ -232,9 +232,7 @@ def _stop_ramp(line: str, numbers: list[float], words: str) -> str | None:
         return None
     tree, call, _ = found
     kind = profile_kind(call)
-    start = next(
-        (k.value for k in call.keywords if k.arg == "start"), call.args[3] if len(call.args) > 3 else None
-    )
+    start = named_argument(call, "start", 3)
     if kind is None or kind.value != "decelerate" or not isinstance(start, ast.Constant):
         return None
     value = start.value

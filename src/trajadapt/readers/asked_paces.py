@@ -52,6 +52,7 @@ from trajadapt.readers.stop_words import COMING_TO_REST, ENDING_THERE
 from trajadapt.readers.words import (
     FASTER,
     GOAL,
+    NEGATED,
     NUMBER_TEXT,
     PLACE_WORDS,
     SLOWER,
@@ -102,7 +103,6 @@ TAKEN_FOR = {"scale_speed": "not a factor", "set_height": "not a height"}
 """What a stated speed was taken for, by the step that took it (the review note says it)."""
 HEIGHT_WORDS = re.compile(r"\b(?:height|altitude|elevation|high|low|above|below|up|down|level)\b", re.I)
 """Words of a height: a number beside them may be a level."""
-NEGATED = re.compile(r"\b(?:not|never|no|don't|doesn't|without)\b|n't\b", re.I)
 TOWARDS_THE_END = re.compile(
     r"\b(?:towards?|near(?:ing)?|approach\w*|reach\w*|at|by)\s+(?:the\s+)?(?:end|finish)\b"
     r"|\b(?:end|last\s+(?:part|stretch|bit|section))\s+of\s+the\s+(?:path|route|trajectory)\b",

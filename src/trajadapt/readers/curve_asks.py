@@ -36,7 +36,7 @@ from trajadapt.code_parse import (
 )
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
-from trajadapt.readers.words import asks_pace
+from trajadapt.readers.words import NEGATED, asks_pace
 from trajadapt.skills import SKILL_NAMES
 
 _BENDING = r"(?:curv\w*|bend\w*|arc\w*)"
@@ -58,7 +58,6 @@ ASKED_STEP = {"more": "exaggerate_curve(t)", "less": "exaggerate_curve(t, 0.5)"}
 """For each ask, the step that makes it: less bend is the path drawn halfway towards its start-goal
 line (``smooth`` only rounds off turns and jitter: a path that bends wide keeps its bend), more is
 the path pushed away from it."""
-NEGATED = re.compile(r"\b(?:not|never|no|don't|without)\b|n't\b", re.I)
 TIMING_STEPS = (*SPEED_STEPS, "wait")
 """Steps that change only when the path is travelled: none of them can be the model's bend."""
 SMOOTHING = re.compile(r"\bsmooth\w*|\bjitter\w*|\bjerk\w*", re.I)

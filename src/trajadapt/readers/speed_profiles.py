@@ -37,7 +37,7 @@ from trajadapt.readers.paces import (
     part_said_for_the_pace,
 )
 from trajadapt.readers.stop_words import AT_REST, COMING_TO_REST
-from trajadapt.readers.words import FASTER, PART_OR_END, SLOWER, asks_pace, names_in, part_named
+from trajadapt.readers.words import FASTER, NEGATED, PART_OR_END, SLOWER, asks_pace, names_in, part_named
 
 TO_A_STOP = re.compile(
     rf"{COMING_TO_REST.pattern}"
@@ -46,7 +46,6 @@ TO_A_STOP = re.compile(
     re.I,
 )
 """Where a slowing ends: at a stop."""
-NEGATION = re.compile(r"\b(?:not|never|no|without)\b|n't\b", re.I)
 ON_THE_WAY = re.compile(
     r"\b(?:halfway|midway|middle|for\s+(?:\d+|a\s+few|a\s+couple|some|a\s+while|a\s+moment)"
     r"|then\s+(?:carry|continu|go|mov|resum|head)\w*)",
@@ -92,7 +91,7 @@ def _stops_at_the_end(clause: str) -> bool:
     Not a stop refused ("never come to a halt") or one on the way ("halfway, stop for 5 steps").
     """
     said = TO_A_STOP.search(clause) and not FASTER.search(clause)
-    return bool(said) and not NEGATION.search(clause) and not ON_THE_WAY.search(clause)
+    return bool(said) and not NEGATED.search(clause) and not ON_THE_WAY.search(clause)
 
 
 def profile_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:

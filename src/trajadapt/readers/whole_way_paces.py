@@ -11,24 +11,18 @@ the code's one speed step (``scale_speed`` or ``set_speed`` placed by ``part=`` 
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterable
 
 from trajadapt.code_parse import PLACED_SPEED_STEPS, SPEED_STEPS, assigned_call, called_name, in_place_of
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.words import ALL_ALONG, EVEN_PACE, SPEED_UNIT, asks_pace, names_in, part_named
-
-NEGATED = re.compile(r"\b(?:no|not|never|without)\b|n't\b", re.I)
-"""A clause said as what not to do ("no slowing down in the middle"): it places no pace."""
+from trajadapt.readers.words import ALL_ALONG, EVEN_PACE, NEGATED, SPEED_UNIT, asks_pace, names_in, part_named
 
 
 def whole_way_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
     """``code`` with its one speed step kept to a part made whole, where the pace holds the whole way.
 
-    "Drive at a steady 0.4 m/s the whole way, no slowing down in the middle" came back as
-    ``set_speed(t, 0.4, part='middle')``: the part of a negated clause. Where one pace clause spans the
-    whole path (``words.ALL_ALONG``) and names no object, and every other pace clause is negated, the
-    code's one speed step loses its ``part=``.
+    Where: one pace clause spans the whole path and names no object and no part, and every other
+    pace clause is negated (see the module).
     """
     words, names = " ".join(asked), list(names)
     paced = [

@@ -395,3 +395,5 @@ EVEN_PACE = re.compile(
 whole way beside a move closer or away in the same clause."""
 SPEED_UNIT = re.compile(r"/\s*s\b|\bper\s+sec\w*|\b(?:a|an|each)\s+second\b|\bmps\b", re.I)
 """A unit of speed: the number before it is a speed, not a factor."""
+NEGATED = re.compile(r"\b(?:not|never|no|without)\b|n't\b", re.I)
+"""A clause said as what not to do ("no slowing down", "never come to a stop", "don't rush")."""

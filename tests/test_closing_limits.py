@@ -184,10 +184,26 @@ def test_pulling_a_path_back_inside_its_bounds_keeps_the_programs_clearance(
     projected = project(ran, original, case.scene, limits, [(found.position, clearance)])
     nearest = np.linalg.norm(projected.trajectory[:, :3] - np.asarray(found.position), axis=1).min()
     assert nearest >= clearance - 1e-6 and not projected.remaining
+    assert not projected.far_sides  # there is room on the side the path passes
 
 
-def test_a_clearance_the_bounds_leave_no_room_for_does_not_pull_the_path_across_the_scene(ovita_dir) -> None:
-    """ground_robot/trajectory_12: the bottle is 0.5 from the wall y = -3; 0.8 from it cannot be kept there."""
+@pytest.mark.parametrize("clearance", [0.6, 0.8, 1.0])
+def test_a_clearance_the_bounds_leave_no_room_for_goes_round_the_objects_other_side(ovita_dir, clearance) -> None:
+    """ground_robot/trajectory_12: the bottle is 0.5 from the wall y = -3, which the path runs along."""
+    case = load_case(ovita_dir / "ground_robot" / "trajectory_12.json")
+    original, bottle = case.trajectory.array, case.scene.find("bottle")
+    assert bottle is not None
+    ran = SKILLS["avoid"](original, [list(bottle.position)], clearance)
+    limits = constraints_for(case.scene)
+    projected = project(ran, original, case.scene, limits, [(bottle.position, clearance)])
+    closest = int(np.argmin(np.linalg.norm(projected.trajectory[:, :3] - np.asarray(bottle.position), axis=1)))
+    assert nearest(projected.trajectory, bottle.position) >= clearance - 1e-6 and not projected.remaining
+    assert projected.trajectory[closest, 1] > bottle.position[1]  # the wall's side is y < -2.5
+    assert projected.far_sides == ("the bottle",) and "other side of the bottle" in projected.describe()
+
+
+def test_going_round_the_far_side_does_not_pull_the_path_across_the_scene(ovita_dir) -> None:
+    """ground_robot/trajectory_12 with its goal moved: the detour round the bottle stays without a jump."""
     case = load_case(ovita_dir / "ground_robot" / "trajectory_12.json")
     original, bottle = case.trajectory.array, case.scene.find("bottle")
     assert bottle is not None
@@ -237,3 +253,13 @@ def test_two_closing_avoids_whose_clearances_overlap_are_held_together(clear: fl
 def test_no_earlier_clearance_is_kept_where_a_later_step_goes_by_a_point_given_otherwise() -> None:
     code = program("t = avoid(t, detect_objects('person'), 0.6)", "t = move_closer(t, [0.0, 0.0, 0.3], 0.5)")
     assert kept_clearances(code, SCENE) == ()
+
+
+def test_avoid_on_the_far_side_takes_the_path_round_the_points_other_side() -> None:
+    path = straight_between()  # passes the bottle at (0.5, -0.3) on its +y side
+    near, far = (SKILLS["avoid"](path, [0.5, -0.3, 0.0], 0.5, far_side=side) for side in (False, True))
+    for held in (near, far):
+        assert nearest(held, (0.5, -0.3, 0.0)) >= 0.5 - 1e-9
+        np.testing.assert_allclose(held[[0, -1]], path[[0, -1]])
+    beside = int(np.argmin(np.abs(path[:, 0] - 0.5)))
+    assert near[beside, 1] > -0.3 + 0.45 and far[beside, 1] < -0.3 - 0.45

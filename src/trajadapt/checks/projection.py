@@ -69,10 +69,15 @@ class Projection:
     remaining: tuple[str, ...]
     moves: tuple[ConstraintMove, ...] = ()
     as_original: tuple[str, ...] = ()
+    far_sides: tuple[str, ...] = ()
+    """The objects whose kept clearance the path keeps by going round their other side."""
 
     def describe(self) -> str:
         """One line for the reviewer."""
         tail = f"; still violated: {'; '.join(self.remaining)}" if self.remaining else ""
+        if self.far_sides:
+            far = ", ".join(self.far_sides)
+            tail += f"; taken round the other side of {far}: no room for its clearance on the near side"
         if self.as_original:
             tail += f"; left as the original has them at its start or goal: {'; '.join(self.as_original)}"
         return f"projected onto the constraints: waypoints moved by at most {self.largest_move:.4g}{tail}"
@@ -95,7 +100,7 @@ def project(
     runs = _runs_of_equal_positions(trajectory)
     firsts = np.flatnonzero(np.r_[True, np.diff(runs) > 0])
     ends = ends_where_the_program_put_them(trajectory, constraints, broken_ends)
-    compact = _keeping_what_it_can(
+    compact, rounded = _keeping_what_it_can(
         trajectory[firsts], original, Problem(scene, constraints, tuple(kept), ends)
     )
     projected = trajectory.copy()
@@ -109,7 +114,8 @@ def project(
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
     broken = new_violations(trajectory, original, scene, constraints)
     moves = constraint_moves(trajectory, projected, broken)
-    return Projection(projected, largest, remaining, moves, as_original)
+    far_sides = tuple(_named(scene, point) for point, _ in rounded)
+    return Projection(projected, largest, remaining, moves, as_original, far_sides)
 
 
 @dataclass(frozen=True)
@@ -142,6 +148,12 @@ class Problem:
         return sum(_nearest(trajectory, point) < distance - 1e-9 for point, distance in self.kept)
 
 
+def _named(scene: Scene, point: Sequence[float]) -> str:
+    """The scene object at ``point``, or the point itself."""
+    at = [o.name for o in scene.objects if np.allclose(o.position, point)]
+    return f"the {at[0]}" if at else f"({', '.join(f'{c:.3g}' for c in point)})"
+
+
 def _nearest(trajectory: Array, point: Sequence[float]) -> float:
     return float(np.linalg.norm(trajectory[:, :3] - np.asarray(point, dtype=np.float64), axis=1).min())
 
@@ -154,21 +166,38 @@ def _runs_of_equal_positions(trajectory: Array) -> np.ndarray:
     return runs
 
 
-def _keeping_what_it_can(trajectory: Array, original: Array, problem: Problem) -> Array:
+def _keeping_what_it_can(trajectory: Array, original: Array, problem: Problem) -> tuple[Array, Kept]:
     """The projection keeping the program's clearances too, where that is no worse; else the plain one.
 
     No worse: it holds them, breaks no more limits than the projection onto the limits alone, and
-    stays as smooth. A clearance the bounds leave no room for (an object 0.5 from a wall, kept 0.8
-    from) must not pull the path across the scene.
+    stays as smooth. Where the limits leave no room on the side the path passes (an object 0.5 from
+    a wall, kept 0.8 from), the path is taken round the object's other side, kept if that is no worse
+    too; it must not be pulled across the scene. Also returned: the clearances taken round the far side.
     """
     plain = _project_distinct(trajectory, original, replace(problem, kept=()))
     plain_limits = problem.limits_broken(plain, original)
     if not problem.kept or plain_limits + problem.kept_broken(plain) == 0:
-        return plain
-    keeping = _project_distinct(trajectory, original, problem)
-    smooth_enough = _longest_step(keeping) <= 1.5 * max(_longest_step(trajectory), _longest_step(plain))
-    no_worse = problem.kept_broken(keeping) == 0 and problem.limits_broken(keeping, original) <= plain_limits
-    return keeping if smooth_enough and no_worse else plain
+        return plain, ()
+    rounded = tuple(
+        (point, distance) for point, distance in problem.kept if _nearest(plain, point) < distance - 1e-9
+    )
+    candidates = [(trajectory, ())] + ([(_round_the_far_side(plain, rounded), rounded)] if rounded else [])
+    for candidate, far in candidates:
+        keeping = _project_distinct(candidate, original, problem)
+        smooth_enough = _longest_step(keeping) <= 1.5 * max(_longest_step(trajectory), _longest_step(plain))
+        no_worse = (
+            problem.kept_broken(keeping) == 0 and problem.limits_broken(keeping, original) <= plain_limits
+        )
+        if smooth_enough and no_worse:
+            return keeping, far
+    return plain, ()
+
+
+def _round_the_far_side(trajectory: Array, clearances: Kept) -> Array:
+    """``trajectory`` taken round each point on the side away from the one it passes, at its clearance."""
+    for point, distance in clearances:
+        trajectory = avoid(trajectory, [list(point)], distance * KEPT_MARGIN, far_side=True)
+    return trajectory
 
 
 def _longest_step(trajectory: Array) -> float:

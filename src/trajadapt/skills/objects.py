@@ -155,17 +155,34 @@ EXACT_ROUNDS = 20
 clearance can land a waypoint in another's where two overlap (two rounds sufficed where measured)."""
 
 
-def avoid(trajectory: TrajectoryArg, points: PointsArg, clearance: float, iterations: int = 50) -> Array:
+def avoid(
+    trajectory: TrajectoryArg,
+    points: PointsArg,
+    clearance: float,
+    iterations: int = 50,
+    *,
+    far_side: bool = False,
+) -> Array:
     """Give a point or a list of points a clearance: every waypoint at least clearance away.
 
     Make every waypoint at least clearance away from each point (one point or a list of points),
     spreading the correction smoothly over neighbouring waypoints. Waypoints already further away stay.
+
+    ``far_side``: take the path round each point on the other side from the one it passes now (where
+    a wall or a bound leaves no room on its own side).
     """
     t = as_trajectory(trajectory)
     centres = _points(points)
     minimum = float(clearance)
+    sides = [-passing_side(t, centre, minimum) if far_side else None for centre in centres]
     for _ in range(int(iterations)):
-        push = sum((clearance_push(t, centre, minimum * 1.02) for centre in centres), np.zeros((len(t), 3)))
+        push = sum(
+            (
+                clearance_push(t, centre, minimum * 1.02, side=side)
+                for centre, side in zip(centres, sides, strict=True)
+            ),
+            np.zeros((len(t), 3)),
+        )
         if not np.any(push):
             break
         t[:, :3] += _spread(push)
@@ -194,17 +211,26 @@ def _ragged(points: Any) -> bool:
     return False
 
 
-def clearance_push(t: Array, centre: Array, minimum: float, sideways: bool = True) -> Array:
+def clearance_push(
+    t: Array, centre: Array, minimum: float, sideways: bool = True, side: Array | None = None
+) -> Array:
     """Displacements that bring waypoints within ``minimum`` of ``centre`` out to it.
 
     Sideways (across the direction of travel) when possible, so that a path running straight at
-    the object bends around it instead of bunching up; radially otherwise.
+    the object bends around it instead of bunching up; radially otherwise. ``side``: the direction
+    from the centre to push towards (across each heading), through the centre if need be; by default
+    the side the waypoints inside are on.
     """
     offset = t[:, :3] - centre
     inside = np.linalg.norm(offset, axis=1) < minimum
     if not inside.any():
         return np.zeros((len(t), 3))
-    direction = sideways_from(t, offset, inside) if sideways else _unit(offset, _fallback(t))
+    if not sideways:
+        direction = _unit(offset, _fallback(t))
+    elif side is None:
+        direction = sideways_from(t, offset, inside)
+    else:
+        direction = _across_heading(t, side)
     along = np.sum(offset * direction, axis=1)
     gap = along**2 - (np.sum(offset * offset, axis=1) - minimum**2)
     distance = -along + np.sqrt(np.maximum(gap, 0.0))
@@ -216,13 +242,31 @@ def _unit(vectors: Array, fallback: Array) -> Array:
     return np.where(norm > 1e-12, vectors / np.maximum(norm, 1e-12), fallback)
 
 
+def passing_side(t: Array, centre: Array, minimum: float) -> Array:
+    """The direction from ``centre`` to the side the path passes it on, across its heading (0 if clear)."""
+    offset = t[:, :3] - np.asarray(centre, dtype=np.float64)
+    inside = np.linalg.norm(offset, axis=1) < minimum
+    return _shared_side(t, offset, inside) if inside.any() else np.zeros(3)
+
+
 def sideways_from(t: Array, offset: Array, inside: Array) -> Array:
     """One shared sideways direction per obstacle, perpendicular to each waypoint's heading."""
+    return _across_heading(t, _shared_side(t, offset, inside))
+
+
+def _shared_side(t: Array, offset: Array, inside: Array) -> Array:
+    """The sum of the inside waypoints' offsets across their heading: the side they pass on."""
     heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
     perpendicular = offset - np.sum(offset * heading, axis=1, keepdims=True) * heading
-    shared = perpendicular[inside].sum(axis=0)
+    shared: Array = perpendicular[inside].sum(axis=0)
     if np.linalg.norm(shared) < 1e-9:
         shared = _fallback(t)[inside].sum(axis=0)
+    return shared
+
+
+def _across_heading(t: Array, shared: Array) -> Array:
+    """``shared`` made perpendicular to each waypoint's heading, as unit vectors."""
+    heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
     local = shared - np.sum(shared * heading, axis=1, keepdims=True) * heading
     return _unit(local, _fallback(t))
 

@@ -188,7 +188,9 @@ def test_pulling_a_path_back_inside_its_bounds_keeps_the_programs_clearance(
 
 
 @pytest.mark.parametrize("clearance", [0.6, 0.8, 1.0])
-def test_a_clearance_the_bounds_leave_no_room_for_goes_round_the_objects_other_side(ovita_dir, clearance) -> None:
+def test_a_clearance_the_bounds_leave_no_room_for_goes_round_the_objects_other_side(
+    ovita_dir, clearance
+) -> None:
     """ground_robot/trajectory_12: the bottle is 0.5 from the wall y = -3, which the path runs along."""
     case = load_case(ovita_dir / "ground_robot" / "trajectory_12.json")
     original, bottle = case.trajectory.array, case.scene.find("bottle")
@@ -196,7 +198,9 @@ def test_a_clearance_the_bounds_leave_no_room_for_goes_round_the_objects_other_s
     ran = SKILLS["avoid"](original, [list(bottle.position)], clearance)
     limits = constraints_for(case.scene)
     projected = project(ran, original, case.scene, limits, [(bottle.position, clearance)])
-    closest = int(np.argmin(np.linalg.norm(projected.trajectory[:, :3] - np.asarray(bottle.position), axis=1)))
+    closest = int(
+        np.argmin(np.linalg.norm(projected.trajectory[:, :3] - np.asarray(bottle.position), axis=1))
+    )
     assert nearest(projected.trajectory, bottle.position) >= clearance - 1e-6 and not projected.remaining
     assert projected.trajectory[closest, 1] > bottle.position[1]  # the wall's side is y < -2.5
     assert projected.far_sides == ("the bottle",) and "other side of the bottle" in projected.describe()

@@ -59,7 +59,8 @@ def test_projection_keeps_bounds_clearance_and_ends() -> None:
     t = np.c_[0.3 * np.sin(np.pi * s), 2 * s, np.ones(60), np.ones(60)]
     scene = Scene((SceneObject("box", 0.3, 1.0, 1.0),))
     limits = Constraints(upper=(0.25, math.inf, math.inf), min_clearance=0.2, keep_start=True, keep_goal=True)
-    result = project(t, t, scene, limits)
+    original = np.c_[0.2 * np.sin(np.pi * s), t[:, 1:]]  # inside the bound: the program broke it
+    result = project(t, original, scene, limits)
     assert result.remaining == ()
     assert result.trajectory[:, 0].max() <= 0.25 + 1e-6
     assert np.linalg.norm(result.trajectory[:, :3] - [0.3, 1, 1], axis=1).min() >= 0.2 - 1e-6
@@ -67,6 +68,20 @@ def test_projection_keeps_bounds_clearance_and_ends() -> None:
     steps = np.linalg.norm(np.diff(result.trajectory[:, :3], axis=0), axis=1)
     assert steps.max() < 3 * np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max()
     assert "moved by at most" in result.describe()
+
+
+def test_a_stretch_the_original_runs_outside_the_room_is_left_as_far_out_as_it_was() -> None:
+    """ground_robot/trajectory_24 starts 1.8 outside y >= -3: pulling only its second waypoint in made a jump."""
+    s = np.linspace(0, 1, 40)
+    original = np.c_[np.zeros(40), -4.8 + 6 * s, np.zeros(40), np.ones(40)]  # y < -3 for its first 12
+    moved = original.copy()
+    moved[:, 0] = 0.5 * np.sin(np.pi * s)  # the program bends it sideways, past x <= 0.3
+    limits = Constraints(lower=(-math.inf, -3.0, -math.inf), upper=(0.3, math.inf, math.inf))
+    result = project(moved, original, Scene(()), limits)
+    steps = np.linalg.norm(np.diff(result.trajectory[:, :3], axis=0), axis=1)
+    assert result.trajectory[:, 0].max() <= 0.3 + 1e-6 and result.remaining == ()
+    assert steps.max() < 1.5 * np.linalg.norm(np.diff(original[:, :3], axis=0), axis=1).max()
+    assert "y below -3" in " ".join(result.as_original) and "outside the room" in result.describe()
 
 
 def answer(code: str) -> str:

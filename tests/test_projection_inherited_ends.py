@@ -70,7 +70,7 @@ def test_the_note_says_which_limits_were_left_as_the_original_has_them() -> None
     result = project(adapted, original, Scene(()), FLOOR)
     assert result.remaining == ()
     assert len(result.as_original) == 1 and "z below 0" in result.as_original[0]
-    assert "left as the original has them at its start or goal: " in result.describe()
+    assert "left as the original has them (at an end, or outside the room): " in result.describe()
 
 
 @settings(max_examples=30, deadline=None)

@@ -41,6 +41,8 @@ from trajadapt.checks.projection_ends import (
     ends_where_the_program_put_them,
     held_as_original,
     holding_kept_ends,
+    matched_original,
+    outside_as_original,
 )
 from trajadapt.checks.projection_moves import constraint_moves
 from trajadapt.errors import DependencyNotInstalled
@@ -61,7 +63,8 @@ class Projection:
     """The projected trajectory and what changed: per constraint, and what is still broken.
 
     ``as_original``: limits the original path itself broke at its start or goal, which the
-    projection left as they were (the code did not move that end).
+    projection left as they were (the code did not move that end), and bounds the original runs
+    outside of, left where it does.
     """
 
     trajectory: Array
@@ -79,7 +82,8 @@ class Projection:
             far = ", ".join(self.far_sides)
             tail += f"; taken round the other side of {far}: no room for its clearance on the near side"
         if self.as_original:
-            tail += f"; left as the original has them at its start or goal: {'; '.join(self.as_original)}"
+            kept = "; ".join(self.as_original)
+            tail += f"; left as the original has them (at an end, or outside the room): {kept}"
         return f"projected onto the constraints: waypoints moved by at most {self.largest_move:.4g}{tail}"
 
 
@@ -108,7 +112,9 @@ def project(
     if constraints.max_speed is not None:
         projected[:, 3] = np.minimum(projected[:, 3], constraints.max_speed)
     left = find_violations(projected, original, scene, constraints)
-    held = held_as_original(left, len(projected), inherited, constraints)
+    held = held_as_original(left, len(projected), inherited, constraints) | outside_as_original(
+        left, projected, original
+    )
     remaining = tuple(v.message for v in left if v.key not in held)
     as_original = tuple(v.message for v in left if v.key in held)
     largest = float(np.linalg.norm(projected[:, :3] - trajectory[:, :3], axis=1).max())
@@ -134,6 +140,19 @@ class Problem:
         return [(end, original[end, :3]) for end, keep in kept if keep] + [
             (end, np.asarray(position)) for end, position in self.ends
         ]
+
+    def bounds(self, count: int, original: Array) -> tuple[Array, Array]:
+        """Lower and upper bounds per waypoint of ``count`` (count x 3), as far out as the original goes.
+
+        Where the original itself lies outside the room (a path that enters it from outside), the
+        waypoint at the same share of the path may lie as far out as the original does there: the
+        projection is for what the program broke, and pulling that stretch inside while its end
+        stays where it was would make a jump.
+        """
+        lower = np.array([_finite(v, -1e9) for v in self.constraints.lower], dtype=np.float64)
+        upper = np.array([_finite(v, 1e9) for v in self.constraints.upper], dtype=np.float64)
+        matched = matched_original(original, count)
+        return np.minimum(lower, matched), np.maximum(upper, matched)
 
     def broken(self, trajectory: Array, original: Array) -> int:
         """How many constraints and kept clearances ``trajectory`` breaks."""
@@ -246,7 +265,7 @@ def _push_into(trajectory: Array, original: Array, problem: Problem) -> Array:
         distance = np.maximum(np.linalg.norm(offsets, axis=1, keepdims=True), 1e-12)
         wanted = np.clip(distance, constraints.reach.minimum, constraints.reach.maximum)
         fixed[:, :3] = base + offsets * wanted / distance
-    fixed[:, :3] = np.clip(fixed[:, :3], np.array(constraints.lower), np.array(constraints.upper))
+    fixed[:, :3] = np.clip(fixed[:, :3], *problem.bounds(len(fixed), original))
     for index, position in problem.pins(original):
         fixed[index, :3] = position
     return fixed
@@ -284,8 +303,7 @@ def _constraint_rows(around: Array, original: Array, problem: Problem) -> tuple[
     count = len(around)
     rows: list[Any] = [sparse.eye(3 * count, format="csr")]
     low, high = [], []
-    lower = np.tile(np.array([_finite(v, -1e9) for v in constraints.lower], dtype=np.float64), count)
-    upper = np.tile(np.array([_finite(v, 1e9) for v in constraints.upper], dtype=np.float64), count)
+    lower, upper = (bound.reshape(-1) for bound in problem.bounds(count, original))
     for end, position in problem.pins(original):  # the result may have another number of waypoints
         index = 0 if end == 0 else count - 1
         lower[3 * index : 3 * index + 3] = upper[3 * index : 3 * index + 3] = position

@@ -2,7 +2,8 @@
 
 A projection is for what the program broke. An end the user keeps (``keep_start`` / ``keep_goal``)
 or the program left at the original's stays there; one the program moved and broke nothing at
-stays where the program put it; a limit the original itself broke at an end is left as it was.
+stays where the program put it; a limit the original itself broke at an end is left as it was, and
+so is a bound along a stretch the original itself runs outside of (``matched_original``).
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from trajadapt.checks.constraints import Constraints, Violation, find_violations
+from trajadapt.checks.constraints import AXES, Constraints, Violation, find_violations
 from trajadapt.model.geometry import Array
 from trajadapt.model.scene import Scene
 
@@ -99,3 +100,25 @@ def _end_of(index: int, count: int) -> int | None:
     """0 for the first of ``count`` waypoints, -1 for the last (negative indices too), else None."""
     position = index % count
     return 0 if position == 0 else -1 if position == count - 1 else None
+
+
+def matched_original(original: Array, count: int) -> Array:
+    """The original's positions at the same shares of the path as each of ``count`` waypoints (count x 3)."""
+    matched: Array = original[np.rint(np.linspace(0, len(original) - 1, count)).astype(int), :3]
+    return matched
+
+
+def outside_as_original(left: list[Violation], trajectory: Array, original: Array) -> set[str]:
+    """The bounds of ``left`` broken only where the original lies at least as far outside them."""
+    matched = matched_original(original, len(trajectory))
+    slack = 1e-6 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
+    held = set()
+    for violation in left:
+        kind, axis, side = (violation.key.split(":") + ["", ""])[:3]
+        if kind != "bounds" or axis not in AXES:
+            continue
+        at, k = list(violation.waypoints), AXES.index(axis)
+        beyond = trajectory[at, k] - matched[at, k]
+        if np.all(beyond >= -slack if side == "below" else beyond <= slack):
+            held.add(violation.key)
+    return held

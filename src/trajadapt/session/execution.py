@@ -12,13 +12,17 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
+import numpy as np
+
 from trajadapt.checks.closing_limits import hold_closing_limits, kept_clearances
-from trajadapt.checks.constraints import ConstraintMove, constraints_for, new_violations
+from trajadapt.checks.constraints import ConstraintMove, Constraints, constraints_for, new_violations
+from trajadapt.checks.even_steps import evened_steps
 from trajadapt.checks.projection import Kept, project
 from trajadapt.checks.review import validate_result
 from trajadapt.checks.robot_limits import robot_constraints
 from trajadapt.errors import CodeRejected, DependencyNotInstalled, InvalidTrajectory
 from trajadapt.model.case import Case
+from trajadapt.model.geometry import Array
 from trajadapt.model.trajectory import Trajectory
 from trajadapt.sandbox.runner import ExecutionOptions, Sandbox
 from trajadapt.sandbox.skill_program import check_skill_program
@@ -111,4 +115,22 @@ def held_to_constraints(
         return replace(
             ran, outcome=Failure.of("ConstraintViolation", "; ".join(v.message for v in violations))
         )
+    evened = evened_steps(trajectory.array, original)
+    if evened is not None and _keeps_what_it_kept(evened, trajectory.array, case, limits, kept):
+        longest = float(np.linalg.norm(np.diff(trajectory.array[:, :3], axis=0), axis=1).max())
+        note = f"waypoints placed evenly round a step of {longest:.3g}, far longer than the original's"
+        return replace(ran, outcome=validate_result(evened), notes=(*ran.notes, note))
     return replace(ran, outcome=trajectory)
+
+
+def _keeps_what_it_kept(evened: Array, before: Array, case: Case, limits: Constraints, kept: Kept) -> bool:
+    """Whether ``evened`` breaks no constraint and comes no nearer a kept clearance's point than it may."""
+    if new_violations(evened, case.trajectory.array, case.scene, limits):
+        return False
+    for point, distance in kept:
+        nearest = [
+            float(np.linalg.norm(t[:, :3] - np.asarray(point), axis=1).min()) for t in (evened, before)
+        ]
+        if nearest[0] < min(distance, nearest[1]) - 1e-9:
+            return False
+    return True

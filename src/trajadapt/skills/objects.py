@@ -176,13 +176,8 @@ def avoid(
     minimum = float(clearance)
     sides = [-passing_side(t, centre, minimum) if far_side else None for centre in centres]
     for _ in range(int(iterations)):
-        push = sum(
-            (
-                clearance_push(t, centre, minimum * 1.02, side=side)
-                for centre, side in zip(centres, sides, strict=True)
-            ),
-            np.zeros((len(t), 3)),
-        )
+        pushes = [clearance_push(t, c, minimum * 1.02, side=s) for c, s in zip(centres, sides, strict=True)]
+        push = np.sum(pushes, axis=0)
         if not np.any(push):
             break
         t[:, :3] += _spread(push)

@@ -44,6 +44,16 @@ def test_nothing_is_read_where_the_choice_is_not_one():
     assert chosen_referents("go from the oboe to the bell", two_words, NAMES)[1] == []
 
 
+def test_a_hyphened_name_said_as_written_is_that_object() -> None:
+    names = ["groenendael", "horse-cart", "hand-held microcomputer"]
+    code = _code("t = wait(t, detect_objects('groenendael'), 3)")
+    for words in (
+        "hold still for a few waypoints close to the horse-cart",
+        "pause beside the hand-held microcomputer",
+    ):
+        assert chosen_referents(words, code, names) == (words, [])
+
+
 def test_parts_and_places_are_no_other_name():
     code = _code("t = scale_speed(t, 1.4, near=detect_objects('drum'))")
     for words in ("speed up through the middle section", "slow down towards the end", "go past the goal"):

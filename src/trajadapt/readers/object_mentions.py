@@ -49,12 +49,16 @@ def chosen_referents(request: str, code: str, names: Sequence[str]) -> tuple[str
 
 
 def _unnamed_things(request: str, names: Sequence[str]) -> set[str]:
-    """The words after a word of place that are no word of any scene name and no part of the path."""
+    """The words after a word of place that are no word of any scene name and no part of the path.
+
+    A hyphened word is a scene name's where its parts are ("the horse-cart" for the horse-cart).
+    """
     scene_words = set(whole_words(" ".join(names)).split())
     return {
         found.group(1).lower()
         for found in MENTION.finditer(request)
-        if found.group(1).lower() not in NOT_THINGS and found.group(1).lower() not in scene_words
+        if found.group(1).lower() not in NOT_THINGS
+        and not set(whole_words(found.group(1)).split()) <= scene_words
     }
 
 

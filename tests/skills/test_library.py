@@ -193,6 +193,17 @@ def test_pass_through_a_point_off_the_path_near_the_goal_keeps_steps_short_and_t
     assert np.allclose(goal_moves[-1, :3], t[-1, :3] + [0.0, 0.0, 15 * longest])
 
 
+def test_pass_over_a_point_nearest_an_end_keeps_the_start_and_the_goal() -> None:
+    t = curve(60)
+    longest = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max())
+    for end in (0, -1):  # the box lies just beyond an end of the path
+        box = t[end, :3] + (t[end, :3] - t[end + (1 if end == 0 else -1), :3]) * 2
+        out = objects.pass_over(t, box)
+        assert np.allclose(out[[0, -1]], t[[0, -1]])
+        over = out[np.argmin(np.linalg.norm(out[:, :2] - box[:2], axis=1))]
+        assert over[2] > box[2] and np.linalg.norm(over[:2] - box[:2]) < 2 * longest
+
+
 def test_missing_object_and_words_are_explained() -> None:
     with pytest.raises(ValueError, match="detect_objects\\(\\) did not find"):
         objects.move_closer(curve(), None)

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from trajadapt.model.geometry import Array, extent, progress
+from trajadapt.skills.bends import bend_sigma, inner_room_to_bend, room_to_bend
 from trajadapt.skills.core import (
     DistanceArg,
     FractionArg,
@@ -301,9 +302,9 @@ def pass_through(
             "(t = pass_through(t, a); t = pass_through(t, b)), or use pass_through(t, midpoint(a, b)) "
             "for the point between them"
         )
-    k = _room_to_bend(t, target, nearest_index(t, target)) if index is None else int(index) % len(t)
+    k = room_to_bend(t, target, nearest_index(t, target)) if index is None else int(index) % len(t)
     s = progress(t)
-    weight = np.exp(-0.5 * ((s - s[k]) / _bend_sigma(t, target - t[k, :3], width)) ** 2)
+    weight = np.exp(-0.5 * ((s - s[k]) / bend_sigma(t, target - t[k, :3], width)) ** 2)
     # the start and the goal stay: a window that is 1 at k and falls smoothly to 0 at each end
     # (subtracting the ends' weights instead, then dividing by the weight at k, blew a bend near an
     # end up many times over)
@@ -337,7 +338,7 @@ def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceA
         tops = [_no_lower_than_the_path(t, top) for top in tops]
     for _ in range(OVER_ROUNDS if len(tops) > 1 else 1):  # each bend nudges the others' passes
         for top in tops:
-            t = pass_through(t, top)
+            t = pass_through(t, top, inner_room_to_bend(t, top))
     return t
 
 
@@ -345,40 +346,6 @@ def _no_lower_than_the_path(t: Array, top: Array) -> Array:
     """``top`` raised to the height of the waypoint horizontally nearest it, where that is higher."""
     nearest = int(np.argmin(np.linalg.norm(t[:, :2] - top[:2], axis=1)))
     return np.array([top[0], top[1], max(float(top[2]), float(t[nearest, 2]))])
-
-
-def _room_to_bend(t: Array, target: Array, k: int) -> int:
-    """The waypoint to pass through the target at: ``k``, or the nearest one with room to bend.
-
-    The bend moves waypoint j by up to |target - t[j]| and fades to nothing at the start and the
-    goal; room means enough waypoints between j and each end for that fade to take steps no longer
-    than the path's longest on average (the smooth window's steepest step is about 1.5 times that).
-    A target near an end and off the path otherwise makes one step many times longer. When no
-    waypoint has room on both sides, the one with the most is used.
-    """
-    longest = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).max())
-    if longest <= 0 or k in (0, len(t) - 1):  # at an end the end itself moves: no window to fall
-        return k
-    need = np.linalg.norm(target - t[:, :3], axis=1) / longest
-    index = np.arange(len(t))
-    shortfall = np.maximum(need - index, 0.0) + np.maximum(need - (len(t) - 1 - index), 0.0)
-    inner = index[1:-1]
-    fits = inner[shortfall[1:-1] == 0]
-    if fits.size:
-        return int(fits[np.argmin(np.abs(fits - k))]) if shortfall[k] > 0 else k
-    return int(inner[np.argmin(shortfall[1:-1])])
-
-
-def _bend_sigma(t: Array, offset: Array, width: float) -> float:
-    """The bend's spread (in progress): ``width / 2``, or wider when a narrow bend would make gaps.
-
-    A Gaussian bend of spread sigma moving a waypoint by |offset| stretches a step of the path by up
-    to about |offset| * step / (sigma * sqrt(e) * length); the spread is widened so that this stays
-    below the path's longest step (the longest step at most about doubles).
-    """
-    length = float(np.linalg.norm(np.diff(t[:, :3], axis=0), axis=1).sum())
-    no_gaps = float(np.linalg.norm(offset)) / (float(np.sqrt(np.e)) * max(length, 1e-12))
-    return float(max(float(width) / 2.0, no_gaps, 1e-6))
 
 
 def reach(trajectory: TrajectoryArg, point: PointArg) -> Array:

@@ -17,7 +17,7 @@ from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.height_asks import relate_heights
 from trajadapt.readers.height_words import asked_heights
 from trajadapt.readers.object_words import ends_at_the_place
-from trajadapt.readers.paces import stated_factor
+from trajadapt.readers.paces import closing_share_start, stated_factor
 from trajadapt.readers.stop_words import COMING_TO_REST
 
 NAMES = ["lamp", "crate", "armchair"]
@@ -365,10 +365,35 @@ def test_a_share_of_the_speed_is_a_stated_factor(words, faster, factor):
         "slow down over the last third",  # a part of the path, no count before it
         "slow down a quarter of the way along",  # a place on the path
         "ease off for two thirds of the route",
+        # a percentage of the path (session 37): "40 percent of the motion" was read as 0.6
+        "taper the velocity off over the final 40 percent of the motion",
+        "brake gently across the closing 25% of the route",
+        "slow down for 30 per cent of the journey",
+        "slow down over the second half",
+        "slow down halfway",
     ],
 )
 def test_a_share_of_the_path_is_no_factor(words):
     assert stated_factor(words, False) is None
+
+
+@pytest.mark.parametrize(
+    ("words", "factor"),
+    [("go 40 percent slower over the last third", 0.6), ("30% slower across 50% of the path", 0.7)],
+)
+def test_a_share_of_the_speed_beside_a_share_of_the_path_is_still_read(words, factor):
+    assert stated_factor(words, False) == pytest.approx(factor)
+
+
+@pytest.mark.parametrize(
+    ("words", "start"),
+    [
+        ("decelerate over the final 40 percent of the motion", 0.6),
+        ("ramp down over the last 25 per cent", 0.75),
+    ],
+)
+def test_a_closing_share_said_in_percent_is_where_the_ramp_starts(words, start):
+    assert closing_share_start(words) == pytest.approx(start)
 
 
 def test_a_share_of_the_speed_replaces_the_models_guess():

@@ -50,7 +50,7 @@ def stated_factor(words: str, faster: bool) -> float | None:
     >>> stated_factor("walk away from the lamp and go slower by half", faster=False)
     0.5
     """
-    clause = _speed_clause(words)
+    clause = PATH_SHARE.sub(" ", _speed_clause(words))
     numbers = [n for n in _factor_numbers(clause) if n > 0]
     candidates = set(numbers) | {1 / n for n in numbers}
     if PERCENT.search(clause):
@@ -117,6 +117,16 @@ SHARE_OF = re.compile(
 """A share said as a fraction of something ("a third of the current speed", "two-thirds of its pace"):
 a factor; "the last third" (no count before it) and "a quarter of the way" are parts of the path."""
 PERCENT = re.compile(rf"({NUMBER_TEXT})\s*(?:%|per\s*cent\b)", re.I)
+_PATH = r"(?:path|route|trajectory|motion|move|movement|way|flight|run|journey|trip|distance|length|course)"
+PATH_SHARE = re.compile(
+    r"\b(?:last|final|closing|first|opening|initial|second|latter)\s+"
+    rf"(?:{NUMBER_TEXT}\s*(?:%|per\s*cent\b)|half|third|quarter|fifth|tenth)"
+    rf"|\b{NUMBER_TEXT}\s*(?:%|per\s*cent\b)\s+of\s+(?:the\s+|its\s+|your\s+|this\s+)?(?:\w+\s+)?{_PATH}\b"
+    rf"|\bhalf\s*way\b|\bhalf\s+(?:of\s+)?(?:the\s+|its\s+)?{_PATH}\b",
+    re.I,
+)
+"""A share of the path, not of the speed: "over the final 40 percent of the motion", "the last 30%",
+"the second half", "halfway"."""
 
 
 def _speed_clause(words: str) -> str:
@@ -151,7 +161,8 @@ def part_said_for_the_pace(clause: str, words: str, names: Sequence[str]) -> boo
 
 
 CLOSING_SHARE = re.compile(
-    rf"\b(?:the\s+)?(?:last|final|closing)\s+(?:(?P<part>half|third|quarter|fifth|tenth)|(?P<percent>{NUMBER_TEXT})\s*%)"
+    r"\b(?:the\s+)?(?:last|final|closing)\s+"
+    rf"(?:(?P<part>half|third|quarter|fifth|tenth)|(?P<percent>{NUMBER_TEXT})\s*(?:%|per\s*cent\b))"
     r"|\b(?:the\s+)?(?P<second>second)\s+half\b",
     re.I,
 )

@@ -93,6 +93,9 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         ("go easy as you pass the crate", False),
         ("crank the velocity up through the middle", True),
         ("ramp it up once past the crate", True),
+        # throttling (session 37: fresh-aa's "throttle back")
+        ("throttle down as you pass the crate", False),
+        ("dial back near the crate", False),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:

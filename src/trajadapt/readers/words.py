@@ -154,14 +154,14 @@ SLOWER = re.compile(
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+eas(?:y|ier)|go(?:es|ing)?\s+(?:easy|easier)"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
     rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF}"
-    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b)",
+    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b|\b(?:throttl|dial)\w*\s+(?:back|down)\b)",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",
-"gently", "ramp the speed down", "taper off" are slower; "zip", "zoom", "rush", "speed through",
-"crank the pace up" faster), a verb or adjective of more
-or less before a speed ("reduce your speed", "raise the pace", "at a lower speed"), and a factor
-that names its direction ("at half your current speed", "at twice the pace")."""
+"gently", "ramp the speed down", "taper off", "throttle back" are slower; "zip", "zoom", "rush",
+"speed through", "crank the pace up" faster), a verb or adjective of more or less before a speed
+("reduce your speed", "raise the pace", "at a lower speed"), and a factor that names its direction
+("at half your current speed", "at twice the pace")."""
 
 GAP_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:distance|gap|berth|clearance|margin|separation)\b"
 CLOSER = re.compile(

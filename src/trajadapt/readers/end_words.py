@@ -11,13 +11,15 @@ from collections.abc import Sequence
 
 from trajadapt.readers.words import GOAL, START
 
+_PLACE_NOUN = r"(?:positions?|points?|poses?|waypoints?|spots?|places?|locations?)"
 _END = (
-    r"(start\w*|begin\w*|initial|take[\s-]?off|end|ends|ending|endpoints?|goal|final|destination|both\s+ends"
-    r"|either\s+end|landing(?=\s+(?:spot|point|pad|place|site|position|zone))|touch[\s-]?down)"
+    rf"(both\s+end(?=\s+{_PLACE_NOUN}\b)|start\w*|begin\w*|initial|take[\s-]?off|end|ends|ending|endpoints?"
+    r"|goal|final|destination|both\s+ends|either\s+end(?:point)?s?"
+    r"|landing(?=\s+(?:spot|point|pad|place|site|position|zone))|touch[\s-]?down)"
 )
 _ENDS = (
-    rf"(?:both\s+)?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
-    r"(?:\s+(?:positions?|points?|poses?|waypoints?|spots?|places?|locations?))?"
+    rf"(?:both\s+(?!end\b))?(?:the\s+)?{_END}(?:\s+(?:and|&|or)\s+(?:the\s+)?{_END})?"
+    rf"(?:\s+{_PLACE_NOUN})?"
 )
 _STATE = (
     r"(?:(?:exactly|just|precisely|right|firmly|completely|totally|entirely)\s+)?(?:the\s+)?(?:same|fixed|unchanged|untouched|in\s+place|put|pinned|still|locked"
@@ -42,6 +44,12 @@ KEPT_ENDS = (
     ),
     re.compile(
         rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+{_MODAL}?(?:stay\w*|remain\w*|(?:is|are)\s+kept|(?:is|are)|be(?:\s+kept)?(?!\s+(?:put|still)\b))\s+{_STATE}",
+        re.I,
+    ),
+    re.compile(
+        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:(?:is|are|was|were|does|do|will|would|should|must|may|can|shall"
+        r"|has|have|needs?)(?:n't|\s+not|\s+never)\s+|never\s+|don't\s+|doesn't\s+)(?:be\s+|get\s+|been\s+)?"
+        r"(?:mov|chang|alter|shift|touch|budg|displac)\w*",
         re.I,
     ),
     re.compile(
@@ -74,7 +82,8 @@ KEPT_ENDS = (
 "don't change the start and end positions", "the endpoints stay fixed", "finish at the original goal",
 "head to the same endpoint", "on to the usual end spot", "keeping the same start", "then finish
 exactly as before", "finish where you normally would", "leave the start and end points exactly where
-they are", "ending at the same spot", "starting from the same point", "end where it ends now", and
+they are", "the end point is not moved", "the start pose must not change", "ending at the same
+spot", "starting from the same point", "end where it ends now", and
 said without a verb: "...; goal unchanged", "start and end fixed"."""
 
 

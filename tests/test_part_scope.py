@@ -281,6 +281,11 @@ def test_a_whole_path_shift_beside_the_going_on_it_repeats_leaves() -> None:
         ("bring all of the trajectory down 0.3", "t = lift_middle(t, 'up', 0.3)"),  # another direction: left
         ("raise the route in an arc by 0.3", "t = lift_middle(t, 'up', 0.3)"),  # no whole path said
         ("raise the whole path by 0.3, keeping the start and goal", "t = lift_middle(t, 'up', 0.3)"),
+        # every point of the path (session 37: fresh-aa's "lift every point of the trajectory")
+        ("move each waypoint 0.3 higher", "t = shift(t, 'up', 0.3)"),
+        ("raise all the points by 0.3", "t = shift(t, 'up', 0.3)"),
+        ("raise the middle points by 0.3", "t = lift_middle(t, 'up', 0.3)"),
+        ("raise every point by 0.3 and wait 4 waypoints by the box", "t = shift(t, 'up', 0.3)"),
     ],
 )
 def test_a_lift_of_the_middle_is_the_whole_path_s_shift_where_the_words_say_the_whole_path(

@@ -34,7 +34,7 @@ from trajadapt.code_parse import (
     skill_program,
 )
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.stop_words import STOPPING
+from trajadapt.readers.stop_words import COUNT, STOPPING
 from trajadapt.readers.words import PLACE_GROUPS, longest_names, names_in, whole_count, whole_words
 from trajadapt.skills import SKILL_NAMES
 from trajadapt.skills.events import POSITION_WORDS
@@ -47,14 +47,6 @@ PAUSE_WORDS = re.compile(
     re.I,
 )
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
-COUNT = re.compile(
-    r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b"
-    r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty|(?<=a\s)couple"
-    r"|(?<=a\s)few)\s+(?:of\s+)?(?:waypoints?|beats?|ticks?)\b",
-    re.I,
-)
-"""A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps",
-"3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place), "a couple of beats"."""
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"

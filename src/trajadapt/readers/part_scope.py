@@ -49,6 +49,7 @@ from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
 from trajadapt.readers.part_words import PartMove, first_count, part_moves
+from trajadapt.readers.stop_words import COUNT
 from trajadapt.readers.words import AWAY, CLOSER, PART_OR_END, names_in
 from trajadapt.sandbox.api import GOAL_NAMES, START_NAMES
 from trajadapt.skills import SKILL_NAMES
@@ -240,10 +241,12 @@ def _stops_at_the_goal(lines: list[str], notes: list[str]) -> None:
 
 WHOLE_PATH = re.compile(
     r"\b(?:whole|entire|complete|full)\s+(?:path|route|trajectory|motion|movement|flight|run|thing|way)\b"
-    r"|\ball\s+of\s+(?:the\s+)?(?:path|route|trajectory|it)\b|\beverything\b",
+    r"|\ball\s+of\s+(?:the\s+)?(?:path|route|trajectory|it)\b|\beverything\b"
+    r"|\b(?:every|each|all(?:\s+the)?)\s+(?:single\s+)?(?:point|waypoint|position|sample)s?\b",
     re.I,
 )
-"""Words that move the path as a whole, ends included ("the whole trajectory", "all of it")."""
+"""Words that move the path as a whole, ends included ("the whole trajectory", "all of it", "every
+point of the path")."""
 
 
 def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
@@ -257,8 +260,8 @@ def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
     the words say is ``shift`` with its amount; so is a ``lift_middle`` (which keeps the ends) where
     the words say the whole path ("lift the whole trajectory 15 cm", ``WHOLE_PATH``).
     """
-    if PART_OR_END.search(REGION.sub(" ", words)):
-        return
+    if PART_OR_END.search(COUNT.sub(" ", WHOLE_PATH.sub(" ", REGION.sub(" ", words)))):
+        return  # "every waypoint", "pause for 3 waypoints" name no part
     said = said_directions(words)
     whole = ("lift_middle",) if WHOLE_PATH.search(words) else ()  # "lift the whole trajectory 15 cm"
     for index, call in _calls(lines, ("shift_goal", "shift_start", "shift_part", *whole)):

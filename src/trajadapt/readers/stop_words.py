@@ -44,3 +44,12 @@ AT_REST = re.compile(
     re.I,
 )
 """Words that leave the robot at rest where it ends: a word of stopping, "not moving", "still there"."""
+
+COUNT = re.compile(
+    r"\b(\d+|[a-z]+)\s+(?:of\s+)?(?:time\s*)?steps?\b"
+    r"|\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty|(?<=a\s)couple"
+    r"|(?<=a\s)few)\s+(?:of\s+)?(?:waypoints?|beats?|ticks?)\b",
+    re.I,
+)
+"""A count of timesteps: "10 timesteps", "five time steps", "7 steps", "a few steps", "a couple of steps",
+"3 waypoints", "a couple of waypoints" (not "the middle waypoint": a place), "a couple of beats"."""

@@ -51,6 +51,25 @@ def test_a_going_on_with_its_amount_and_heading_is_one_clause():
     assert split_clauses(words, NAMES) == (
         "Carry on past the current end point, another 10 cm or so straight ahead",
     )
+    onwards = "go on 5 cm past where it stops, continuing to the left"  # session 37: a going-on participle
+    assert split_clauses(onwards, NAMES) == (onwards,)
+
+
+@pytest.mark.parametrize(
+    "words",
+    [  # the robot itself as the subject after "while" only says where (session 37: "while the gripper is near")
+        "throttle back while the gripper is near the box",
+        "hurry while the drone is beside the lamp",
+        "ease off while your arm is close to the chair",
+    ],
+)
+def test_while_the_robot_is_somewhere_is_a_place_of_the_request_before(words):
+    assert split_clauses(words, NAMES) == (words,)
+
+
+def test_while_the_robot_does_something_more_is_a_request_of_its_own():
+    words = "head left while the arm eases to a halt at the end"
+    assert split_clauses(words, NAMES) == ("head left", "the arm eases to a halt at the end")
 
 
 def test_a_piece_ending_on_an_auxiliary_has_its_verb_in_the_next():

@@ -193,9 +193,10 @@ slower"): no request of its own ("as fast as you can" is one, its verb said befo
 
 HEADING_WORDS = frozenset(
     "heading head headed going moving travelling traveling facing pointing pointed aiming aimed toward "
-    "towards direction straight ahead onward onwards".split()
+    "towards direction straight ahead onward onwards continuing proceeding carrying on".split()
 )
-"""Words of a participle that only says which way the motion goes ("heading forward", "going left")."""
+"""Words of a participle that only says which way the motion goes ("heading forward", "going left",
+"continuing backward")."""
 
 
 def _only_a_heading(piece: str, names: Sequence[str]) -> bool:
@@ -264,11 +265,18 @@ def _asks_more(piece: str, previous: str, names: Sequence[str]) -> bool:
     )
 
 
+ROBOT_ITSELF = re.compile(
+    r"\b(?:the|your|its|our)\s+(?:robot|drone|arm|gripper|end\s+effector|tool|vehicle|craft|quadcopter|rover)\b",
+    re.I,
+)
+"""The robot itself as a piece's subject: "while *the gripper* is near the packet" only says where."""
+
+
 def _only_a_place(piece: str, names: Sequence[str]) -> bool:
     """Whether a piece only says where along the path ("passing close to the quill", "you are near it")."""
     if asks_distance(piece) or said_directions(piece):
         return False  # "while moving nearer to the bow" asks to come closer
-    return not set(_content_words(PLACE_WORDS.sub(" ", piece), names)) - MOVING
+    return not set(_content_words(PLACE_WORDS.sub(" ", ROBOT_ITSELF.sub(" ", piece)), names)) - MOVING
 
 
 def _content_words(piece: str, names: Sequence[str]) -> list[str]:

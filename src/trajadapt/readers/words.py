@@ -96,12 +96,13 @@ PACE_PHRASES = re.compile(
     r"|\b(?:slow|slowing|speed|speeding|ramp|ramping)\s+(?:the|your|its|this|that)"
     r"(?:\s+(?!and\b|then\b|to\b|so\b)[a-z]+){1,4}?\s+(?:down|up)\b"
     r"|\b(?:bring|brought|get|got|take|took|turn|dial|knock|drop|crank|push|pull)\w*\s+(?:the\s+|its\s+|your\s+)?"
-    r"(?:speed|pace|velocity|tempo)\s+(?:back\s+)?(?:down|up)\b",
+    r"(?:speed|pace|velocity|tempo)\s+(?:back\s+)?(?:down|up)\b"
+    r"|\b(?:throttl|dial)\w*\s+(?:it\s+)?(?:back|down)(?:\s+down)?\b",
     re.I,
 )
 """Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease
 up", "speed the whole run up", "slow the final approach down", "bring the speed down", "dial the pace
-back up"; "pick up the pace" is a word before a speed, which ``said_directions`` already leaves out)."""
+back up", "throttle back"; "pick up the pace" is a word before a speed, left out already)."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""

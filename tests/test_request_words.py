@@ -59,6 +59,29 @@ def test_the_statement_leaves_and_pointing_back_is_written_out(words, read):
 
 
 @pytest.mark.parametrize(
+    ("words", "read"),
+    [  # what the robot does now, said as what to do instead of (session 37)
+        ("Instead of stopping and starting again, hold 0.3 the whole way.", "hold 0.3 the whole way."),
+        ("Pass left of the lamp rather than swinging wide to the right, then slow down.", "Pass left of the lamp, then slow down."),
+        ("Go left. Instead of creeping near the chair, speed up near the chair.", "Go left. speed up near the chair."),
+    ],
+)  # fmt: skip
+def test_what_to_do_instead_of_leaves_where_nothing_is_lost(words, read):
+    assert request_words(words, NAMES) == read
+
+
+@pytest.mark.parametrize(
+    "words",
+    [
+        "Instead of stopping at the goal, carry on another 0.2 forward.",  # the goal is said only there
+        "go over the box rather than around",  # no doing
+    ],
+)
+def test_what_to_do_instead_of_stays_where_it_names_what_the_rest_does_not(words):
+    assert request_words(words, NAMES) == words
+
+
+@pytest.mark.parametrize(
     "words",
     [
         "Go left by 0.2 and slow down near the lamp",

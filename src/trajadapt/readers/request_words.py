@@ -40,11 +40,20 @@ _STATE_VERBS = (
 """What a subject does in a statement: a verb in the present (ending in s) or past, or a state."""
 STATEMENT = re.compile(
     rf"^{_OPENER}(?:{_WHERE}{_SUBJECT}(?:'s|'re|\s+{_STATE_VERBS})\b"
-    r"|(?:why|how come)\b|(?:isn't|aren't|doesn't|wasn't|didn't)\s+(?:it|the|you|this|that)\b)",
+    r"|(?:why|how come)\b|(?:isn't|aren't|doesn't|wasn't|didn't)\s+(?:it|the|you|this|that)\b"
+    r"|(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b)",
     re.I,
 )
 """A sentence that says how the path is now, or asks why: "it's too fast near the lamp", "the path sits
-a bit low", "you went right past the mug", "why does it stop at the goal", "the lamp is way too close"."""
+a bit low", "you went right past the mug", "why does it stop at the goal", "the lamp is way too close";
+and what the robot does now, said as what to do instead of ("instead of slowing to a halt mid-route")."""
+INSTEAD = re.compile(
+    r"(?P<opening>(?:^|(?<=[.;:!?])\s*)(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b[^,;:.]*[,;:]\s*)"
+    r"|,?\s+(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b[^,;:.!?]*",
+    re.I,
+)
+"""Where a piece that says what to do instead of opens or follows the request: "*Instead of stopping
+mid-route,* drive on", "route past the fan *instead of hugging the wall*"."""
 
 REQUESTING = re.compile(
     r"\b(?:should|must|needs? to|has to|have to|ought|want|would like|could you|can you|please|let it"
@@ -73,7 +82,7 @@ def request_words(instruction: str, names: Sequence[str] = ()) -> str:
     >>> request_words("Go left by 0.2 and slow down near the box", ["box"])
     'Go left by 0.2 and slow down near the box'
     """
-    instruction = plain_words(instruction, names, is_statement)
+    instruction = _instead_left_out(plain_words(instruction, names, is_statement), names)
     said_so = _sentences(instruction)
     sentences = [s for s in (OPENER.sub("", s) for s in said_so) if s]
     opened = sentences != said_so
@@ -108,6 +117,17 @@ def _said(sentences: list[str], stated: list[str], names: Sequence[str]) -> set[
 def _sentences(instruction: str) -> list[str]:
     """The sentences, a reason after a dash, "because" or "since" counting as a sentence of its own."""
     return [x.strip() for s in SENTENCE_END.split(instruction) for x in REASON.split(s) if x.strip()]
+
+
+def _instead_left_out(instruction: str, names: Sequence[str]) -> str:
+    """``instruction`` less each "instead of <doing>" piece whose objects and ends the rest names too."""
+    read = instruction
+    for found in reversed(list(INSTEAD.finditer(instruction))):
+        rest = read[: found.start()] + read[found.end() :]
+        if set(_referents(found.group(0), names)) <= set(_referents(rest, names)):
+            space = " " if found.group("opening") and found.start() else ""
+            read = read[: found.start()] + space + read[found.end() :]
+    return read.strip() if read != instruction else instruction
 
 
 def _referents(sentence: str, names: Sequence[str]) -> list[str]:

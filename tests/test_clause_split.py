@@ -80,6 +80,10 @@ def test_a_piece_ending_on_an_auxiliary_has_its_verb_in_the_next():
 def test_alongside_an_object_sets_the_next_request():
     words = "When it gets alongside the box, hold still for five waypoints"
     assert split_clauses(words, NAMES) == (words,)
+    within = "Within roughly 30 cm of the lamp, cut the pace by a third"  # session 37: with an amount
+    assert split_clauses(within, NAMES) == (within,)
+    after = "pass by the lamp, within about 30 cm of it, then keep clear of the box"  # the pass's amount
+    assert split_clauses(after, NAMES)[-1] == "keep clear of the box"
 
 
 def test_a_place_said_with_an_amount_word_is_no_amount():

@@ -87,7 +87,8 @@ def split_clauses(instruction: str, names: Sequence[str] = ()) -> tuple[str, ...
         elif clauses and not _starts_a_request(joiner, piece, clauses[-1], names):
             clauses[-1] = f"{clauses[-1]}{joiner}{piece}"
             continue
-        if LEAD_INS.match(piece) and _is_only_a_setting(piece, names):
+        opening = not clauses or joiner.strip() in (".", ";", "!", "?")  # an amount may set the sentence
+        if LEAD_INS.match(piece) and _is_only_a_setting(piece, names, opening):
             pending = piece + ","
             continue
         clauses.append(piece)
@@ -343,10 +344,15 @@ def _only_a_topic(piece: str, names: Sequence[str]) -> bool:
     return all(word in SETTING_WORDS or word in TOPIC_WORDS for word in _content_words(piece, names))
 
 
-def _is_only_a_setting(piece: str, names: Sequence[str]) -> bool:
-    """A lead-in piece that says when or where but asks nothing itself ('after reaching the goal')."""
+def _is_only_a_setting(piece: str, names: Sequence[str], opening: bool = False) -> bool:
+    """A lead-in that says when or where and asks nothing ('after reaching the goal').
+
+    One that opens a sentence may give an amount ('Within about a metre of the piano, ...'); after a
+    request, such a piece is that request's amount ('swing by the piano, within about 30 cm of it').
+    """
     words = _content_words(LEAD_INS.sub("", piece), names)
-    return all(w.endswith(("ing", "ed")) or w in SETTING_WORDS or w in NEARNESS or w in MOVING for w in words)
+    settings = SETTING_WORDS | NEARNESS | MOVING | (AMOUNT_WORDS if opening else frozenset())
+    return all(w.endswith(("ing", "ed")) or w in settings for w in words)
 
 
 SETTING_WORDS = frozenset(

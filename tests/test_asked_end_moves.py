@@ -34,6 +34,9 @@ def steps_after(words: str, *steps: str) -> list[str]:
         # the goal named with a word between (session 31; fresh-j's "the final hover point")
         ("lower the final resting position a bit", ("shift_goal", "down")),
         ("put the final parking point 0.2 further left", ("shift_goal", "left")),
+        # the other end kept beside it (session 37: "move the end point 0.4 m backward, keeping the start unchanged")
+        ("shift the goal a little to the left while the start stays put", ("shift_goal", "left")),
+        ("raise the starting point, with the end left unchanged", ("shift_start", "up")),
     ],
 )
 def test_an_end_move_is_read(clause: str, asked: tuple[str, str]) -> None:

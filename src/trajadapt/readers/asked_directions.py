@@ -36,6 +36,7 @@ from trajadapt.code_parse import assigned_call, called_name, in_place_of, skill_
 from trajadapt.model.geometry import DIRECTION_SYNONYMS, OPPOSITE_DIRECTIONS
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.direction_words import said_directions
+from trajadapt.readers.end_words import without_kept_ends
 from trajadapt.readers.part_words import ENDS_MOVED
 from trajadapt.readers.words import GOAL, PART_OR_END, START, intensity_word, part_named
 from trajadapt.skills import SKILL_NAMES
@@ -244,6 +245,7 @@ def asked_end_move(clause: str) -> tuple[str, str | None]:
     "End 0.2 higher than now" asks ``shift_goal`` up; "finish 0.3 further to the right" right; a
     clause that names both ends, another part, a place ("above the lamp") or a negation asks no end move.
     """
+    clause = without_kept_ends(clause)  # "move the goal back, keeping the start unchanged" moves the goal
     ends = [skill for skill, words in ENDS_MOVED.items() if words.search(clause)]
     directions = said_directions(clause)
     if len(ends) != 1 or len(directions) != 1:

@@ -108,3 +108,9 @@ def _ends_of(word: str) -> tuple[str, ...]:
         return ("start",)
     both = word.startswith(("endpoint", "both", "either")) or word == "ends"
     return ("start", "goal") if both else ("goal",)
+
+
+def without_kept_ends(words: str) -> str:
+    """``words`` less what keeps an end where it is ("move the goal back, *keeping the start unchanged*")."""
+    spans = [found.span() for pattern in KEPT_ENDS for found in pattern.finditer(words)]
+    return "".join(" " if any(a <= i < b for a, b in spans) else c for i, c in enumerate(words))

@@ -26,7 +26,7 @@ import re
 
 from trajadapt.code_parse import call_of, in_place_of, on_object
 from trajadapt.readers.clause_split import split_clauses
-from trajadapt.readers.end_words import KEPT_ENDS
+from trajadapt.readers.end_words import without_kept_ends
 from trajadapt.readers.object_words import ends_at_the_place
 from trajadapt.readers.words import (
     CLOSER,
@@ -105,20 +105,14 @@ def come_within_stated_reaches(lines: list[str], notes: list[str], words: str, n
         within = COME_WITHIN.search(clause)
         if len(named) != 1 or within is None or asks_pace(clause) or MINIMUM_DISTANCE.search(clause):
             continue
-        if NEGATION.search(clause[: within.start()]) or KEEPING_AROUND.search(_without_kept_ends(clause)):
+        if NEGATION.search(clause[: within.start()]) or KEEPING_AROUND.search(without_kept_ends(clause)):
             continue
         steps = [i for i, x in enumerate(lines) if on_object(call_of(x, SHORT_OF_A_VISIT), named[0])]
         if len(steps) != 1:
             continue
         before, t = lines[steps[0]].strip(), lines[steps[0]].split("=")[0].strip()
-        skill = "reach" if ends_at_the_place(_without_kept_ends(clause), words) else "pass_through"
+        skill = "reach" if ends_at_the_place(without_kept_ends(clause), words) else "pass_through"
         after = f"{t} = {skill}({t}, detect_objects({named[0]!r}))"
         lines[steps[0]] = in_place_of(lines[steps[0]], after)
         reach = re.findall(NUMBER_TEXT, within.group(0))[-1]
         notes.append(f"`{before}` -> `{after}`: the instruction asks to come within {reach} of {named[0]}")
-
-
-def _without_kept_ends(clause: str) -> str:
-    """The clause less its words that keep an end ("keeping the start and the goal fixed"): no band."""
-    spans = [found.span() for pattern in KEPT_ENDS for found in pattern.finditer(clause)]
-    return "".join(" " if any(a <= i < b for a, b in spans) else c for i, c in enumerate(clause))

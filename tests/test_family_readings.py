@@ -386,6 +386,18 @@ def test_a_share_of_the_speed_beside_a_share_of_the_path_is_still_read(words, fa
 
 
 @pytest.mark.parametrize(
+    ("words", "faster", "factor"),
+    [  # a change by a fraction of the speed (session 37: "speed the middle section up by about a quarter")
+        ("speed the middle section up by about a quarter", True, 1.25),
+        ("cut the speed by roughly a third near the crate", False, 2 / 3),
+        ("quicken the pace by one fifth", True, 1.2),
+    ],
+)
+def test_a_change_by_a_fraction_is_a_stated_factor(words, faster, factor):
+    assert stated_factor(words, faster) == pytest.approx(factor, abs=1e-5)
+
+
+@pytest.mark.parametrize(
     ("words", "start"),
     [
         ("decelerate over the final 40 percent of the motion", 0.6),

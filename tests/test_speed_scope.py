@@ -290,3 +290,15 @@ def test_an_even_pace_said_with_a_move_closer_holds_the_whole_way() -> None:
     code = "t = get_trajectory()\nt = set_speed(t, 0.2)\nmodified_trajectory = t"
     words = ["hold a constant velocity of 0.2 as you move nearer to the box"]
     assert localize_speed(code, words, NAMES) == (code, [])
+
+
+@pytest.mark.parametrize(
+    "words",
+    [  # an end kept where it is is no part of the pace (session 37: "keeping the same final pose")
+        "cut the overall speed by about a third, keeping the same final pose",
+        "slow everything down a little and leave the end position unchanged",
+    ],
+)
+def test_words_that_keep_an_end_place_no_pace_there(words: str) -> None:
+    code, notes = localize_speed(CODE.format(step="t = scale_speed(t, 0.65)"), [words], NAMES)
+    assert "t = scale_speed(t, 0.65)" in code.splitlines() and notes == []

@@ -96,6 +96,7 @@ def test_a_word_before_a_speed_or_a_distance_names_no_direction(words: str) -> N
         # throttling (session 37: fresh-aa's "throttle back")
         ("throttle down as you pass the crate", False),
         ("dial back near the crate", False),
+        ("speed the middle section up a bit", True),
     ],
 )
 def test_a_verb_or_adjective_before_a_speed_asks_more_or_less(words: str, faster: bool) -> None:

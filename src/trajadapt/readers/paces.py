@@ -53,8 +53,10 @@ def stated_factor(words: str, faster: bool) -> float | None:
     clause = PATH_SHARE.sub(" ", _speed_clause(words))
     numbers = [n for n in _factor_numbers(clause) if n > 0]
     candidates = set(numbers) | {1 / n for n in numbers}
-    if PERCENT.search(clause):
-        percent = [float(n) for n in PERCENT.findall(clause)]
+    if PERCENT.search(clause) or BY_A_SHARE.search(clause):
+        percent = [float(n) for n in PERCENT.findall(clause)] + [
+            100 / SHARE_PARTS[part.lower()] for part in BY_A_SHARE.findall(clause)
+        ]
         candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}
     asked = {round(c, 6) for c in candidates if (c > 1 if faster else 0 < c < 1)}
     if len(asked) != 1:
@@ -117,6 +119,10 @@ SHARE_OF = re.compile(
 """A share said as a fraction of something ("a third of the current speed", "two-thirds of its pace"):
 a factor; "the last third" (no count before it) and "a quarter of the way" are parts of the path."""
 PERCENT = re.compile(rf"({NUMBER_TEXT})\s*(?:%|per\s*cent\b)", re.I)
+BY_A_SHARE = re.compile(
+    r"\bby\s+(?:about\s+|roughly\s+|around\s+|some\s+)?(?:a|one)\s+(third|quarter|fifth)\b", re.I
+)
+"""A change by a share of the speed, said as a fraction: "up by about a quarter" is 25% faster."""
 _PATH = r"(?:path|route|trajectory|motion|move|movement|way|flight|run|journey|trip|distance|length|course)"
 PATH_SHARE = re.compile(
     r"\b(?:last|final|closing|first|opening|initial|second|latter)\s+"

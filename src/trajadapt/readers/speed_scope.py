@@ -45,6 +45,7 @@ from trajadapt.code_parse import (
 )
 from trajadapt.model.scene import name_key
 from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.end_words import without_kept_ends
 from trajadapt.readers.object_words import WITHIN
 from trajadapt.readers.paces import asked_factor, part_said_for_the_pace, stated_factor
 from trajadapt.readers.stop_words import COMING_TO_REST
@@ -79,7 +80,7 @@ PART_UNPLACED = re.compile(
     re.I,
 )
 """Words naming a part that place no pace there: "slow down right from the start" (all of it), "slower
-than at the start" (a comparison)."""
+than at the start" (a comparison); and so do words that keep an end ("keeping the same final pose")."""
 KEEPS_A_SIDE = re.compile(r"\b(?:left|right|front|behind|side)\s+of\b", re.I)
 """A side of an object a clause keeps ("stay left of the box"): something asked of it besides a pace."""
 
@@ -142,7 +143,7 @@ def _to_the_paced_part(
     ``scale_speed(t, 0.45, near=marmoset)``: the pace is the last stretch's.
     """
     paced = " ".join(c for c in clauses if asks_pace(c))
-    part = part_named(PART_UNPLACED.sub(" ", paced))
+    part = part_named(PART_UNPLACED.sub(" ", without_kept_ends(paced)))
     found = assigned_call(lines[index])
     if part is None or names_in(paced, names) or found is None:
         return "\n".join(lines), []
@@ -166,7 +167,7 @@ def _placed_in_the_named_part(code: str, words: str, names: list[str]) -> tuple[
     """
     paced = [c for c in split_clauses(words, names) if asks_pace(c)]
     whole = len(paced) != 1 or names_in(paced[0], names) or ALL_ALONG.search(paced[0])
-    part = None if whole else part_named(PART_UNPLACED.sub(" ", paced[0]))
+    part = None if whole else part_named(PART_UNPLACED.sub(" ", without_kept_ends(paced[0])))
     part = None if part in ("goal", "destination", "target") else part  # an end is a place, not a part
     lines = code.splitlines()
     unplaced = [i for i, line in enumerate(lines) if _unplaced_speed_call(line, True) is not None]

@@ -142,8 +142,8 @@ _TURNING_THE_PACE = (
 up", "bring the speed down"): with "down" slower, "up" faster ("bring it down" is a height, "take the
 ramp down" a place: a speed noun or "it" after the verb)."""
 FASTER = re.compile(
-    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|speed(?:s|ing)? up|zip\w*|zoom\w*"
-    r"|sprint\w*|rush\w*|hustl\w*"
+    r"\b(?:fast\w*|quick\w*|rapid\w*|swift\w*|hurr\w*|accelerat\w*|brisk\w*|zip\w*|zoom\w*|sprint\w*|rush\w*"
+    r"|hustl\w*|speed(?:s|ing)?\s+(?:(?:the|your|its|this|that)\s+(?:[a-z]+\s+){0,2}?)?up\b"
     rf"|{_SPEED_VERB}(?:s|ing|ed)?\s+(?:through|past|along|across|over|by)\b"
     rf"|(?:increas|rais|boost|doubl|higher|greater|more)\w*\s+{CHANGED_SPEED}"
     rf"|pick(?:s|ed|ing)?\s+up\s+{SPEED_NOUN}|(?:twice|double|triple)\s+{_SPEED_OF}"

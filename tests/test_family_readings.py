@@ -379,7 +379,12 @@ def test_a_share_of_the_path_is_no_factor(words):
 
 @pytest.mark.parametrize(
     ("words", "factor"),
-    [("go 40 percent slower over the last third", 0.6), ("30% slower across 50% of the path", 0.7)],
+    [
+        ("go 40 percent slower over the last third", 0.6),
+        ("30% slower across 50% of the path", 0.7),
+        ("fly at half the flight speed", 0.5),  # "N% of the motion speed" is a speed, not a share of the path
+        ("slow to 50% of your usual run speed", 0.5),
+    ],
 )
 def test_a_share_of_the_speed_beside_a_share_of_the_path_is_still_read(words, factor):
     assert stated_factor(words, False) == pytest.approx(factor)

@@ -285,7 +285,11 @@ def test_a_whole_path_shift_beside_the_going_on_it_repeats_leaves() -> None:
         ("move each waypoint 0.3 higher", "t = shift(t, 'up', 0.3)"),
         ("raise all the points by 0.3", "t = shift(t, 'up', 0.3)"),
         ("raise the middle points by 0.3", "t = lift_middle(t, 'up', 0.3)"),
-        ("raise every point by 0.3 and wait 4 waypoints by the box", "t = shift(t, 'up', 0.3)"),
+        ("raise every point by 0.3 and wait for 4 waypoints by the box", "t = shift(t, 'up', 0.3)"),
+        (
+            "raise each waypoint near the box by 0.3",
+            "t = lift_middle(t, 'up', 0.3)",
+        ),  # a place: no whole path
     ],
 )
 def test_a_lift_of_the_middle_is_the_whole_path_s_shift_where_the_words_say_the_whole_path(
@@ -293,3 +297,11 @@ def test_a_lift_of_the_middle_is_the_whole_path_s_shift_where_the_words_say_the_
 ) -> None:
     code, _ = scope_to_parts(CODE.format(step="t = lift_middle(t, 'up', 0.3)"), [words])
     assert code == CODE.format(step=expected)
+
+
+@pytest.mark.parametrize(
+    "words", ["for the first steps, go 10 cm left", "move the final ten waypoints 10 cm left"]
+)
+def test_waypoints_or_steps_that_name_a_part_are_no_pause_length(words: str) -> None:
+    code = CODE.format(step="t = shift_part(t, 'left', 0.1, part='end')")
+    assert "shift_part" in scope_to_parts(code, [words])[0]

@@ -64,6 +64,7 @@ def test_the_statement_leaves_and_pointing_back_is_written_out(words, read):
         ("Instead of stopping and starting again, hold 0.3 the whole way.", "hold 0.3 the whole way."),
         ("Pass left of the lamp rather than swinging wide to the right, then slow down.", "Pass left of the lamp, then slow down."),
         ("Go left. Instead of creeping near the chair, speed up near the chair.", "Go left. speed up near the chair."),
+        ("Pass left of the lamp instead of going right and slow down near the lamp.", "Pass left of the lamp and slow down near the lamp."),
     ],
 )  # fmt: skip
 def test_what_to_do_instead_of_leaves_where_nothing_is_lost(words, read):
@@ -75,6 +76,7 @@ def test_what_to_do_instead_of_leaves_where_nothing_is_lost(words, read):
     [
         "Instead of stopping at the goal, carry on another 0.2 forward.",  # the goal is said only there
         "go over the box rather than around",  # no doing
+        "Go left. Instead of creeping near the box go faster near the box.",  # no comma: the piece's end unsaid
     ],
 )
 def test_what_to_do_instead_of_stays_where_it_names_what_the_rest_does_not(words):

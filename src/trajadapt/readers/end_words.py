@@ -47,8 +47,8 @@ KEPT_ENDS = (
         re.I,
     ),
     re.compile(
-        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:(?:is|are|was|were|does|do|will|would|should|must|may|can|shall"
-        r"|has|have|needs?)(?:n't|\s+not|\s+never)\s+|never\s+|don't\s+|doesn't\s+)(?:be\s+|get\s+|been\s+)?"
+        rf"\b(?<!neither\s)(?<!not\s){_ENDS}\s+(?:(?:must|should|shall|will|would|can|may|needs?\s+to|has\s+to"
+        r"|have\s+to)(?:n't|\s+not|\s+never)\s+(?:be\s+|get\s+)?|(?:is|are)(?:n't|\s+not)\s+(?:to\s+be\s+)?(?=\w+ed\b))"
         r"(?:mov|chang|alter|shift|touch|budg|displac)\w*",
         re.I,
     ),

@@ -124,11 +124,12 @@ BY_A_SHARE = re.compile(
 )
 """A change by a share of the speed, said as a fraction: "up by about a quarter" is 25% faster."""
 _PATH = r"(?:path|route|trajectory|motion|move|movement|way|flight|run|journey|trip|distance|length|course)"
+_NO_SPEED = r"(?!\s+(?:speed|pace|velocity|tempo))"  # "60% of the original motion speed" is a speed
 PATH_SHARE = re.compile(
     r"\b(?:last|final|closing|first|opening|initial|second|latter)\s+"
     rf"(?:{NUMBER_TEXT}\s*(?:%|per\s*cent\b)|half|third|quarter|fifth|tenth)"
-    rf"|\b{NUMBER_TEXT}\s*(?:%|per\s*cent\b)\s+of\s+(?:the\s+|its\s+|your\s+|this\s+)?(?:\w+\s+)?{_PATH}\b"
-    rf"|\bhalf\s*way\b|\bhalf\s+(?:of\s+)?(?:the\s+|its\s+)?{_PATH}\b",
+    rf"|\b{NUMBER_TEXT}\s*(?:%|per\s*cent\b)\s+of\s+(?:the\s+|its\s+|your\s+|this\s+)?(?:\w+\s+)?{_PATH}\b{_NO_SPEED}"
+    rf"|\bhalf\s*way\b|\bhalf\s+(?:of\s+)?(?:the\s+|its\s+)?{_PATH}\b{_NO_SPEED}",
     re.I,
 )
 """A share of the path, not of the speed: "over the final 40 percent of the motion", "the last 30%",

@@ -242,9 +242,12 @@ def _stops_at_the_goal(lines: list[str], notes: list[str]) -> None:
 WHOLE_PATH = re.compile(
     r"\b(?:whole|entire|complete|full)\s+(?:path|route|trajectory|motion|movement|flight|run|thing|way)\b"
     r"|\ball\s+of\s+(?:the\s+)?(?:path|route|trajectory|it)\b|\beverything\b"
-    r"|\b(?:every|each|all(?:\s+the)?)\s+(?:single\s+)?(?:point|waypoint|position|sample)s?\b",
+    r"|\b(?:every|each|all(?:\s+the)?)\s+(?:single\s+)?(?:point|waypoint|position|sample)s?\b"
+    r"(?!\s+(?:near|nearest|between|around|close|closest|next|beside|within|inside|past|in|at|on|from|after|before)\b)",
     re.I,
 )
+PAUSE_LENGTH = re.compile(rf"\bfor\s+(?:a\s+)?(?:{COUNT.pattern})", re.I)
+"""How long a pause lasts ("hold still for a few waypoints"): no part of the path."""
 """Words that move the path as a whole, ends included ("the whole trajectory", "all of it", "every
 point of the path")."""
 
@@ -260,7 +263,7 @@ def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:
     the words say is ``shift`` with its amount; so is a ``lift_middle`` (which keeps the ends) where
     the words say the whole path ("lift the whole trajectory 15 cm", ``WHOLE_PATH``).
     """
-    if PART_OR_END.search(COUNT.sub(" ", WHOLE_PATH.sub(" ", REGION.sub(" ", words)))):
+    if PART_OR_END.search(PAUSE_LENGTH.sub(" ", WHOLE_PATH.sub(" ", REGION.sub(" ", words)))):
         return  # "every waypoint", "pause for 3 waypoints" name no part
     said = said_directions(words)
     whole = ("lift_middle",) if WHOLE_PATH.search(words) else ()  # "lift the whole trajectory 15 cm"

@@ -40,16 +40,14 @@ _STATE_VERBS = (
 """What a subject does in a statement: a verb in the present (ending in s) or past, or a state."""
 STATEMENT = re.compile(
     rf"^{_OPENER}(?:{_WHERE}{_SUBJECT}(?:'s|'re|\s+{_STATE_VERBS})\b"
-    r"|(?:why|how come)\b|(?:isn't|aren't|doesn't|wasn't|didn't)\s+(?:it|the|you|this|that)\b"
-    r"|(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b)",
+    r"|(?:why|how come)\b|(?:isn't|aren't|doesn't|wasn't|didn't)\s+(?:it|the|you|this|that)\b)",
     re.I,
 )
 """A sentence that says how the path is now, or asks why: "it's too fast near the lamp", "the path sits
-a bit low", "you went right past the mug", "why does it stop at the goal", "the lamp is way too close";
-and what the robot does now, said as what to do instead of ("instead of slowing to a halt mid-route")."""
+a bit low", "you went right past the mug", "why does it stop at the goal", "the lamp is way too close"."""
 INSTEAD = re.compile(
     r"(?P<opening>(?:^|(?<=[.;:!?])\s*)(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b[^,;:.]*[,;:]\s*)"
-    r"|,?\s+(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b[^,;:.!?]*",
+    r"|(?<=[\w'\"]),?\s+(?:instead\s+of|rather\s+than)\s+[a-z]+ing\b[^,;:.!?]*?(?=\s+(?:and|then|but)\b|[,;:.!?]|$)",
     re.I,
 )
 """Where a piece that says what to do instead of opens or follows the request: "*Instead of stopping

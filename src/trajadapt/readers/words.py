@@ -97,12 +97,11 @@ PACE_PHRASES = re.compile(
     r"(?:\s+(?!and\b|then\b|to\b|so\b)[a-z]+){1,4}?\s+(?:down|up)\b"
     r"|\b(?:bring|brought|get|got|take|took|turn|dial|knock|drop|crank|push|pull)\w*\s+(?:the\s+|its\s+|your\s+)?"
     r"(?:speed|pace|velocity|tempo)\s+(?:back\s+)?(?:down|up)\b"
-    r"|\b(?:throttl|dial)\w*\s+(?:it\s+)?(?:back|down)(?:\s+down)?\b",
+    r"|\b(?:throttl|dial)\w*\s+(?:it\s+)?(?:back\s+)?(?:down|up|back)\b",
     re.I,
 )
-"""Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease
-up", "speed the whole run up", "slow the final approach down", "bring the speed down", "dial the pace
-back up", "throttle back"; "pick up the pace" is a word before a speed, left out already)."""
+"""Phrasal verbs of pace whose particle is no direction ("slow down", "slow it down", "speed up", "ease up",
+"speed the whole run up", "bring the speed down", "dial the pace back up", "throttle back")."""
 
 SPEED_NOUN = r"(?:the\s+|your\s+|its\s+|their\s+|a\s+)?(?:speed|pace|velocity)\b"
 """A speed as the object of a verb ("raise the speed", "lower your pace")."""
@@ -135,7 +134,7 @@ _SPEED_OF = (
 
 
 _TURNING_THE_PACE = (
-    r"(?:(?:ramp|dial|crank|throttl)\w*\s+(?:it|things|everything)\s+"
+    r"(?:(?:ramp|dial|crank|throttl)\w*\s+(?:it|things|everything)\s+|throttl\w*\s+"
     rf"|(?:ramp|dial|crank|throttl|bring|brought|knock|turn)\w*\s+{SPEED_NOUN}\s+)(?:back\s+)?"
 )
 """A verb that turns a pace up or down ("ramp the speed down", "dial it back down", "crank the pace
@@ -155,7 +154,8 @@ SLOWER = re.compile(
     r"|eas(?:e|es|ed|ing)\s+(?:off|up)|tak(?:e|es|ing|en)\s+it\s+eas(?:y|ier)|go(?:es|ing)?\s+(?:easy|easier)"
     rf"|(?:reduc|decreas|lower|cut|drop|halv|lessen|less|smaller)\w*\s+{CHANGED_SPEED}"
     rf"|(?:half|a\s+third\s+of|a\s+quarter\s+of)\s+{_SPEED_OF}"
-    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b|\b(?:throttl|dial)\w*\s+(?:back|down)\b)",
+    rf"|{_TURNING_THE_PACE}down\b|\btaper\w*\s+(?:{SPEED_NOUN}\s+)?off\b"
+    r"|\b(?:throttl|dial)\w*\s+(?:it\s+)?(?:back|down)\b(?!\s+up))",
     re.I,
 )
 """What asks for more speed, and for less: speed words ("ease off", "take it easy", "crawl", "creep",

@@ -384,6 +384,11 @@ def test_a_share_of_the_path_is_no_factor(words):
         ("30% slower across 50% of the path", 0.7),
         ("fly at half the flight speed", 0.5),  # "N% of the motion speed" is a speed, not a share of the path
         ("slow to 50% of your usual run speed", 0.5),
+        (
+            "crawl at 30% of the current pace over the last third",
+            0.3,
+        ),  # a percentage of a speed is the factor
+        ("drop to 70 percent of its speed near the crate", 0.7),
     ],
 )
 def test_a_share_of_the_speed_beside_a_share_of_the_path_is_still_read(words, factor):

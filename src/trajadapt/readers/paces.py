@@ -44,8 +44,8 @@ def stated_factor(words: str, faster: bool) -> float | None:
     """The one factor the speed clause of ``words`` states in the asked direction, or None.
 
     "slower by half" states 0.5, "twice as fast" 2, "20% slower" 0.8 (a percentage only with its
-    sign), "at least 25% slower" 0.7 (``LEAST_MARGIN``); a clause with no such number, or with two,
-    states none.
+    sign; "60% of the speed" is 0.6), "at least 25% slower" 0.7 (``LEAST_MARGIN``); a clause with no
+    such number, or with two, states none.
 
     >>> stated_factor("walk away from the lamp and go slower by half", faster=False)
     0.5
@@ -58,6 +58,8 @@ def stated_factor(words: str, faster: bool) -> float | None:
             100 / SHARE_PARTS[part.lower()] for part in BY_A_SHARE.findall(clause)
         ]
         candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}
+    if PERCENT_OF_SPEED.search(clause):  # "at 60% of its current speed" is the factor itself
+        candidates = {float(n) / 100 for n in PERCENT_OF_SPEED.findall(clause)}
     asked = {round(c, 6) for c in candidates if (c > 1 if faster else 0 < c < 1)}
     if len(asked) != 1:
         return None
@@ -124,6 +126,12 @@ BY_A_SHARE = re.compile(
 )
 """A change by a share of the speed, said as a fraction: "up by about a quarter" is 25% faster."""
 _PATH = r"(?:path|route|trajectory|motion|move|movement|way|flight|run|journey|trip|distance|length|course)"
+PERCENT_OF_SPEED = re.compile(
+    rf"({NUMBER_TEXT})\s*(?:%|per\s*cent\b)\s+of\s+(?:the\s+|its\s+|your\s+|their\s+)?(?:[a-z]+\s+){{0,2}}?"
+    r"(?:speed|pace|velocity|tempo)\b",
+    re.I,
+)
+"""A percentage *of* a speed: the factor itself ("slow to 60% of the speed" is 0.6, not 0.4)."""
 _NO_SPEED = r"(?!\s+(?:speed|pace|velocity|tempo))"  # "60% of the original motion speed" is a speed
 PATH_SHARE = re.compile(
     r"\b(?:last|final|closing|first|opening|initial|second|latter)\s+"

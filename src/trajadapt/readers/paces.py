@@ -53,13 +53,13 @@ def stated_factor(words: str, faster: bool) -> float | None:
     clause = PATH_SHARE.sub(" ", _speed_clause(words))
     numbers = [n for n in _factor_numbers(clause) if n > 0]
     candidates = set(numbers) | {1 / n for n in numbers}
-    if PERCENT.search(clause) or BY_A_SHARE.search(clause):
+    if PERCENT_OF_SPEED.search(clause):  # "at 60% of its current speed" is the factor itself
+        candidates = {float(n) / 100 for n in PERCENT_OF_SPEED.findall(clause)}
+    elif PERCENT.search(clause) or BY_A_SHARE.search(clause):
         percent = [float(n) for n in PERCENT.findall(clause)] + [
             100 / SHARE_PARTS[part.lower()] for part in BY_A_SHARE.findall(clause)
         ]
         candidates = {1 + n / 100 for n in percent} | {1 - n / 100 for n in percent if n < 100}
-    if PERCENT_OF_SPEED.search(clause):  # "at 60% of its current speed" is the factor itself
-        candidates = {float(n) / 100 for n in PERCENT_OF_SPEED.findall(clause)}
     asked = {round(c, 6) for c in candidates if (c > 1 if faster else 0 < c < 1)}
     if len(asked) != 1:
         return None

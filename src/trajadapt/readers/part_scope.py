@@ -246,10 +246,10 @@ WHOLE_PATH = re.compile(
     r"(?!\s+(?:near|nearest|between|around|close|closest|next|beside|within|inside|past|in|at|on|from|after|before)\b)",
     re.I,
 )
-PAUSE_LENGTH = re.compile(rf"\bfor\s+(?:a\s+)?(?:{COUNT.pattern})", re.I)
-"""How long a pause lasts ("hold still for a few waypoints"): no part of the path."""
 """Words that move the path as a whole, ends included ("the whole trajectory", "all of it", "every
 point of the path")."""
+PAUSE_LENGTH = re.compile(rf"\bfor\s+(?:a\s+)?(?:{COUNT.pattern})", re.I)
+"""How long a pause lasts ("hold still for a few waypoints"): no part of the path."""
 
 
 def _moves_of_no_part(lines: list[str], notes: list[str], words: str) -> None:

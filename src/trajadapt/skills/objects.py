@@ -242,17 +242,22 @@ def passing_side(t: Array, centre: Array, minimum: float) -> Array:
     """The direction from ``centre`` to the side the path passes it on, across its heading (0 if clear)."""
     offset = t[:, :3] - np.asarray(centre, dtype=np.float64)
     inside = np.linalg.norm(offset, axis=1) < minimum
-    return _shared_side(t, offset, inside) if inside.any() else np.zeros(3)
+    return _shared_side(t, _heading(t), offset, inside) if inside.any() else np.zeros(3)
 
 
 def sideways_from(t: Array, offset: Array, inside: Array) -> Array:
     """One shared sideways direction per obstacle, perpendicular to each waypoint's heading."""
-    return _across_heading(t, _shared_side(t, offset, inside))
+    heading = _heading(t)
+    return _across_heading(t, _shared_side(t, heading, offset, inside), heading)
 
 
-def _shared_side(t: Array, offset: Array, inside: Array) -> Array:
+def _heading(t: Array) -> Array:
+    """Each waypoint's unit direction of travel (+y where the path does not move)."""
+    return _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
+
+
+def _shared_side(t: Array, heading: Array, offset: Array, inside: Array) -> Array:
     """The sum of the inside waypoints' offsets across their heading: the side they pass on."""
-    heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
     perpendicular = offset - np.sum(offset * heading, axis=1, keepdims=True) * heading
     shared: Array = perpendicular[inside].sum(axis=0)
     if np.linalg.norm(shared) < 1e-9:
@@ -260,9 +265,9 @@ def _shared_side(t: Array, offset: Array, inside: Array) -> Array:
     return shared
 
 
-def _across_heading(t: Array, shared: Array) -> Array:
+def _across_heading(t: Array, shared: Array, heading: Array | None = None) -> Array:
     """``shared`` made perpendicular to each waypoint's heading, as unit vectors."""
-    heading = _unit(np.gradient(t[:, :3], axis=0), np.array([[0.0, 1.0, 0.0]]))
+    heading = _heading(t) if heading is None else heading
     local = shared - np.sum(shared * heading, axis=1, keepdims=True) * heading
     return _unit(local, _fallback(t))
 

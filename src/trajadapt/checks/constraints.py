@@ -232,8 +232,8 @@ def new_violations(
 def find_violations(
     trajectory: Array, original: Array, scene: Scene, constraints: Constraints
 ) -> list[Violation]:
-    """Every constraint ``trajectory`` breaks, with the measured numbers (tolerance 1e-6 of the scale)."""
-    slack = 1e-6 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
+    """Every constraint ``trajectory`` breaks, with the measured numbers (tolerance ``violation_slack``)."""
+    slack = violation_slack(original)
     found = _bound_violations(trajectory, constraints, slack)
     found += _reach_violations(trajectory, constraints, slack)
     found += _clearance_violations(trajectory, scene, constraints, slack)
@@ -253,6 +253,11 @@ def find_violations(
                 Violation(key, f"the {key} moved by {moved:.4g}; it must stay", (index % len(trajectory),))
             )
     return found
+
+
+def violation_slack(original: Array) -> float:
+    """How far past a limit still keeps it: 1e-6 of the original's extent (at least 1e-6)."""
+    return 1e-6 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
 
 
 def _reach_violations(trajectory: Array, constraints: Constraints, slack: float) -> list[Violation]:

@@ -12,7 +12,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from trajadapt.checks.constraints import AXES, Constraints, Violation, find_violations
+from trajadapt.checks.constraints import AXES, Constraints, Violation, find_violations, violation_slack
 from trajadapt.model.geometry import Array
 from trajadapt.model.scene import Scene
 
@@ -111,7 +111,7 @@ def matched_original(original: Array, count: int) -> Array:
 def outside_as_original(left: list[Violation], trajectory: Array, original: Array) -> set[str]:
     """The bounds of ``left`` broken only where the original lies at least as far outside them."""
     matched = matched_original(original, len(trajectory))
-    slack = 1e-6 * max(float(np.ptp(original[:, :3], axis=0).max()), 1.0)
+    slack = violation_slack(original)  # as far past a bound as find_violations lets it be
     held = set()
     for violation in left:
         kind, axis, side = (violation.key.split(":") + ["", ""])[:3]

@@ -117,7 +117,7 @@ def held_to_constraints(
         )
     evened = evened_steps(trajectory.array, original)
     if evened is not None and _keeps_what_it_kept(evened, trajectory.array, case, limits, kept):
-        longest = float(np.linalg.norm(np.diff(trajectory.array[:, :3], axis=0), axis=1).max())
+        longest = float(trajectory.step_lengths().max())
         note = f"waypoints placed evenly round a step of {longest:.3g}, far longer than the original's"
         return replace(ran, outcome=validate_result(evened), notes=(*ran.notes, note))
     return replace(ran, outcome=trajectory)

@@ -275,6 +275,19 @@ def test_stop_wait_extend_segment() -> None:
     assert np.allclose(segment[-1, :3], [1, 1, 1]) and segment[-1, 3] == 0 and segment[N - 1, 3] > 0
 
 
+def test_going_on_keeps_the_pace_the_path_arrives_with() -> None:
+    t = curve()
+    t[:, 3] = np.linspace(1.0, 0.0, N)  # fastest at the start, slowing to rest at the goal
+    longer = events.extend(t, 0.2)
+    arrival = t[-2, 3]
+    assert np.allclose(longer[N - 1 : -1, 3], arrival) and longer[-1, 3] == 0
+    assert longer[:, 3].mean() < t[:, 3].mean()  # going on adds no spell at the top speed
+    t[:, 3] = 0.5
+    assert np.allclose(events.extend(t, 0.2)[N - 1 : -1, 3], 0.5)  # not at rest: its own speed
+    t[:, 3] = 0.0
+    assert events.going_on_pace(t) == 0.0
+
+
 def test_spiral_and_circle() -> None:
     t = curve()
     at_goal = events.spiral(t, 0.1, turns=3)

@@ -127,17 +127,33 @@ def _final_heading(t: Array) -> Array:
 
 
 def append_segment(trajectory: TrajectoryArg, point: PointArg, count: int = 10) -> Array:
-    """After the goal, go on in a straight line to point, adding count waypoints (the robot stops there)."""
+    """After the goal, go on in a straight line to point, adding count waypoints (the robot stops there).
+
+    The added waypoints keep the pace of ``going_on_pace``; the old goal no longer rests.
+    """
     t = as_trajectory(trajectory)
     target = as_point(point)
     count = max(int(count), 1)
     fractions = np.linspace(1.0 / count, 1.0, count)[:, None]
-    cruise = float(t[:, 3].max() if t[-1, 3] == 0 else t[-1, 3])
-    segment = np.hstack([t[-1, :3] + fractions * (target - t[-1, :3]), np.full((count, 1), cruise)])
+    pace = going_on_pace(t)
+    segment = np.hstack([t[-1, :3] + fractions * (target - t[-1, :3]), np.full((count, 1), pace)])
     segment[-1, 3] = 0.0
     moving = t.copy()
-    moving[-1, 3] = cruise if t[-1, 3] == 0 else t[-1, 3]
+    moving[-1, 3] = pace
     return np.vstack([moving, segment])
+
+
+def going_on_pace(trajectory: Array) -> float:
+    """The pace a path goes on at past its goal: its speed at the goal, or the pace it arrives with.
+
+    A path that comes to rest at its goal goes on at the speed of its last moving waypoint (the pace
+    of its approach, not its top speed elsewhere); one with no moving waypoint, at its top speed.
+    """
+    speeds = trajectory[:, 3]
+    if speeds[-1] > 0:
+        return float(speeds[-1])
+    moving = np.flatnonzero(speeds[:-1] > 0)
+    return float(speeds[moving[-1]] if moving.size else speeds.max())
 
 
 def spiral(

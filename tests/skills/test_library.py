@@ -342,6 +342,19 @@ def test_zigzag_smooth_resample_noise() -> None:
     assert len(fewer) == 10 and (fewer[:, 3] >= 0).all()
 
 
+def test_smoothing_at_its_default_strength_takes_out_most_of_a_wiggle() -> None:
+    s = np.linspace(0.0, 1.0, 40)
+    wiggle = 0.02 * np.sin(2 * np.pi * np.arange(40) / 8)  # 8 waypoints long
+    t = np.stack([s, 0.3 * np.sin(np.pi * s) + wiggle, np.zeros(40), np.ones(40)], axis=1)
+
+    def roughness(path: np.ndarray) -> float:
+        bends = np.linalg.norm(np.diff(path[:, :3], n=2, axis=0), axis=1).sum()
+        return float(bends / np.linalg.norm(np.diff(path[:, :3], axis=0), axis=1).sum())
+
+    smoothed = shape.smooth(t)
+    assert roughness(smoothed) < 0.5 * roughness(t) and np.allclose(smoothed[[0, -1]], t[[0, -1]])
+
+
 def test_every_skill_is_documented_and_listed() -> None:
     text = describe_skills()
     for function in SKILLS:

@@ -48,6 +48,7 @@ from trajadapt.sandbox.rewrite import (
     limits_last,
     measure_from_original,
     passes_last,
+    smoothing_last,
 )
 from trajadapt.sandbox.template import Template, TemplateGone, ended, send_job
 from trajadapt.skills import SKILL_NAMES, Axes, bind_skills
@@ -195,6 +196,7 @@ def execute(job: dict[str, Any], modules: dict[str, Any]) -> ChildResult:
         notes += measure_from_original(tree)
         notes += passes_last(tree)
         notes += limits_last(tree)
+        notes += smoothing_last(tree)
     namespace = _namespace(api, modules, output) if python_layers else _unrestricted_namespace(api, output)
     try:
         exec(compile(tree, GENERATED_FILENAME, "exec"), namespace)  # noqa: S102

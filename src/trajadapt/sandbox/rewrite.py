@@ -20,6 +20,12 @@ beside them.
 of the bottle then ``move_closer`` to the table, which brought the path back to 0.29 from the bottle.
 A limit (a clearance, a height bound) keeps its promise only when no move runs after it:
 ``limits_last`` runs such steps after the moves beside them that name none of their objects.
+
+"Smooth out the wiggles and bring it nearer to the quill" came back as ``smooth`` then
+``move_closer``, and the move's bend left the path rougher than the original. A smoothing keeps its
+promise only when nothing reshapes the path after it: ``smoothing_last`` runs it after the moves and
+passes beside it (a limit still runs after the smoothing: a smoothing after a clearance pulls the
+path back into it).
 """
 
 from __future__ import annotations
@@ -246,3 +252,22 @@ def _skill(statement: ast.stmt) -> str | None:
 
 def _has_keyword(statement: ast.stmt, name: str) -> bool:
     return any(k.arg == name for k in statement.value.keywords)  # type: ignore[attr-defined]
+
+
+SMOOTHING = frozenset({"smooth"})
+"""Steps that smooth the path out: a move after them brings its bends back."""
+
+
+def smoothing_last(tree: ast.Module) -> list[str]:
+    """Run the smoothing steps after the moves and passes that follow them (see the module).
+
+    Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable made of
+    ``SMOOTHING``, ``MOVES``, ``PASSES``, ``FREE_MOVES`` and ``SPEEDS`` steps only, where a move
+    or pass follows a smoothing: the smoothings go to the end of the run. A limit step ends a run,
+    so it stays after the smoothing (run this after ``limits_last``).
+
+    Returns:
+        One note per step moved.
+    """
+    reshaping = (MOVES | PASSES | FREE_MOVES) - SMOOTHING
+    return _last_in_their_runs(tree, SMOOTHING, reshaping, "the path it leaves is smooth")

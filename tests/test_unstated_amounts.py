@@ -202,6 +202,10 @@ def test_a_made_up_factor_takes_the_one_pace_the_words_ask(
         ("keep left and cut the pace by half", 0.45, 0.5),
         ("cruise twice as quickly along the whole route", 1.7, 2.0),
         ("go 30% slower after the lamp", 0.5, 0.7),
+        # a percentage counts in the direction the words ask: 0.7 is no "30% quicker"
+        ("can we take the opening bit about 30% quicker?", 0.7, 1.3),
+        ("roll 40% faster while crossing the rug", 0.6, 1.4),
+        ("be 25% slower as the bin comes close", 1.25, 0.75),
     ],
 )
 def test_a_made_up_factor_becomes_the_one_the_words_state(words, made_up, stated):

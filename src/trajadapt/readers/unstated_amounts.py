@@ -53,10 +53,17 @@ LENGTH_NAMES = ("clearance", "margin")
 RADII = ("radius",)  # how far a speed change reaches: a number, not an amount word; made up -> the default
 
 
-def is_stated_factor(value: float, numbers: list[float]) -> bool:
-    """Whether a speed factor comes from the user's numbers: n, 1/n, or 1 +- n% ('20% faster')."""
-    candidates = list(numbers) + [1 / n for n in numbers if n] + [1 + n / 100 for n in numbers]
-    candidates += [1 - n / 100 for n in numbers if n < 100]
+def is_stated_factor(value: float, numbers: list[float], faster: bool | None = None) -> bool:
+    """Whether a speed factor comes from the user's numbers: n, 1/n, or 1 +- n% ('20% faster').
+
+    ``faster``: the direction the words ask, when they ask one; a percentage then counts only in it
+    ("30% faster" states 1.3, not 0.7).
+    """
+    candidates = list(numbers) + [1 / n for n in numbers if n]
+    if faster is not False:
+        candidates += [1 + n / 100 for n in numbers]
+    if faster is not True:
+        candidates += [1 - n / 100 for n in numbers if n < 100]
     return any(abs(value - c) <= 1e-6 * max(1.0, c) for c in candidates)
 
 
@@ -169,7 +176,10 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
         faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
         asked = faster if faster != slower else value > 1
         stated = stated_factor(words, asked)
-        if is_stated_factor(float(value), numbers) and (stated is None or AT_LEAST.search(words) is None):
+        one_way = asked if faster != slower else None
+        if is_stated_factor(float(value), numbers, one_way) and (
+            stated is None or AT_LEAST.search(words) is None
+        ):
             continue
         if stated is not None and abs(stated - value) <= 1e-6:
             continue

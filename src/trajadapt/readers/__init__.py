@@ -34,6 +34,7 @@ from trajadapt.readers.held_paces import hold_stated_paces
 from trajadapt.readers.kept_ends import keep_kept_ends
 from trajadapt.readers.object_asks import replace_object_steps
 from trajadapt.readers.object_mentions import chosen_referents
+from trajadapt.readers.pace_directions import turn_paces_as_asked
 from trajadapt.readers.paced_places import leave_out_moves_of_paced_places
 from trajadapt.readers.part_scope import scope_to_parts
 from trajadapt.readers.past_the_goal import add_destination
@@ -110,6 +111,8 @@ READERS: tuple[Reader, ...] = (
     Reader("asked-paces", "a pace a clause asks (slower, faster, a stated speed) and no step makes",
            add_asked_paces),
     Reader("speed-scope", "a speed change the words tie to one object", localize_speed),
+    Reader("pace-directions", "a speed step near an object that goes against the pace its clause asks there",
+           turn_paces_as_asked),
     Reader("whole-way-paces", "a pace the words hold the whole way, written for one part", whole_way_paces),
     Reader("paced-places", "a move by an object the words only place a pace near",
            leave_out_moves_of_paced_places),

@@ -1,0 +1,81 @@
+"""A speed step near an object that goes against the pace its clause asks there, turned the asked way.
+
+"Go faster near the kettle and slower near the lamp" came back as ``scale_speed(t, 0.65,
+near=kettle)`` and ``scale_speed(t, 1.4, near=lamp)``: each object got the other's pace. The request
+as a whole asks both ways, so a reading of its one direction (``unstated_amounts``) cannot tell which
+is meant where; the clauses can. Where every clause that asks a pace (a request, not negated) names
+exactly one scene object and asks exactly one way (``FASTER`` or ``SLOWER``), each asks that way near
+its object; an object two clauses ask different ways of is left alone. A ``scale_speed`` step placed
+near such an object whose literal factor goes the other way takes the factor its clause states in
+the asked way ("20% slower": 0.8, ``paces.stated_factor``), else the phrase table's for the clause's
+amount word (``paces.speed_factor``). A review note says so. Code that is not made of skill calls
+alone is left alone.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterable
+
+from trajadapt.code_parse import assigned_call, in_place_of, named_argument, placed_near, skill_program
+from trajadapt.readers.clause_split import split_clauses
+from trajadapt.readers.paces import speed_factor, stated_factor
+from trajadapt.readers.request_words import is_statement
+from trajadapt.readers.words import FASTER, NEGATED, SLOWER, asks_pace, longest_names, names_in
+from trajadapt.skills import SKILL_NAMES
+
+
+def turn_paces_as_asked(code: str, asked: Iterable[str], names: Iterable[str]) -> tuple[str, list[str]]:
+    """``code`` with each speed step near an object turned the way its clause asks, and a note each."""
+    lines, names = code.splitlines(), list(names)
+    if skill_program(lines, SKILL_NAMES) is None:
+        return code, []
+    paces = asked_paces_near(" ".join(asked), names)
+    notes: list[str] = []
+    for index, line in enumerate(lines):
+        parsed = assigned_call(line)
+        if parsed is None or parsed[2] != "scale_speed":
+            continue
+        tree, call, _ = parsed
+        written = _literal_factor(call)
+        name = placed_near(call)
+        ask = next((paces[key] for key in paces if name and key.casefold() == name.casefold()), None)
+        if ask is None or written is None or written[1] == 1 or (written[1] > 1) == ask[0]:
+            continue
+        faster, clause = ask
+        stated = stated_factor(clause, faster)
+        written[0].value = stated if stated is not None else speed_factor(clause, faster)
+        before, after = line.strip(), ast.unparse(tree)
+        lines[index] = in_place_of(line, after)
+        way = "faster" if faster else "slower"
+        notes.append(f"`{before}` -> `{after}`: the words ask {way} near {name} ({clause.strip()!r})")
+    return ("\n".join(lines), notes) if notes else (code, [])
+
+
+def asked_paces_near(words: str, names: list[str]) -> dict[str, tuple[bool, str]]:
+    """Each object a pace clause asks one way near, as (faster, the clause).
+
+    Empty unless every pace clause names exactly one object and asks exactly one way.
+    """
+    asks: dict[str, tuple[bool, str]] = {}
+    torn: set[str] = set()
+    for clause in split_clauses(words, names):
+        if not asks_pace(clause) or is_statement(clause) or NEGATED.search(clause):
+            continue
+        named = longest_names(names_in(clause, names))
+        faster, slower = bool(FASTER.search(clause)), bool(SLOWER.search(clause))
+        if len(named) != 1 or faster == slower:
+            return {}
+        if named[0] in asks and asks[named[0]][0] != faster:
+            torn.add(named[0])
+        asks.setdefault(named[0], (faster, clause))
+    return {name: ask for name, ask in asks.items() if name not in torn}
+
+
+def _literal_factor(call: ast.Call) -> tuple[ast.Constant, float] | None:
+    """A ``scale_speed`` call's factor and its value, when it is written as a plain positive number."""
+    node = named_argument(call, "factor", 1)
+    if not isinstance(node, ast.Constant) or isinstance(node.value, bool):
+        return None
+    value = node.value
+    return (node, float(value)) if isinstance(value, int | float) and value > 0 else None

@@ -26,6 +26,10 @@ def program(*steps: str) -> str:
         ("idle beside the vase for a little while", "vase", SOME_TIME_STEPS, True),
         ("dwell briefly at the midpoint", "middle", SOME_TIME_STEPS, False),
         ("hang in the air by the blue cup for some moments", "blue cup", SOME_TIME_STEPS, True),
+        # a length said with no "for", a short pause by its noun, a short stop that a verb adds
+        ("hold it there a moment once level with the vase", "vase", SOME_TIME_STEPS, True),
+        ("by the blue cup, a brief hover please", "blue cup", SOME_TIME_STEPS, True),
+        ("put in a quick halt near the vase", "vase", SOME_TIME_STEPS, True),
         # the count in the clause after a pause with a place and no count
         ("come to a standstill next to the vase and then wait out 7 steps", "vase", 7, True),
         ("freeze at the start, dwell for two timesteps", "start", 2, False),
@@ -46,6 +50,7 @@ def test_a_pause_its_place_and_its_count(words: str, place: str, steps: int, is_
         "lift the rest of the path for 5 timesteps",  # no word for stopping
         "stop for 5 timesteps",  # no place
         "wait 3 timesteps between the vase and the cup",  # two places
+        "come to a quick stop at the vase",  # a quick stop with no verb that adds it ends the path
     ],
 )
 def test_no_count_no_pause_word_or_no_one_place_asks_no_pause(words: str) -> None:

@@ -47,14 +47,18 @@ PAUSE_WORDS = re.compile(
     re.I,
 )
 """Words for stopping or staying in place ("hold" but not "hold the height": a level kept, not a place)."""
+_SHORT = r"(?:brief|short|quick|momentary|little)"
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"
-    r"|an?\s+(?:brief|short|quick|momentary|little)\s+(?:pause|wait|hold|breather)"
-    r"|(?:make|take|have|do)\w*\s+an?\s+(?:brief|short|quick|momentary|little)\s+(?:stop|halt|rest))\b",
+    r"|a\s+(?:little\s+|short\s+|brief\s+)?(?:moment|while|beat|spell)"
+    rf"|an?\s+{_SHORT}\s+(?:pause|wait|hold|breather|hover|dwell|rest|break)"
+    r"|(?:make|take|have|do|add|build|insert|put|includ|fit|work|schedul)\w*(?:\s+in)?\s+an?\s+"
+    rf"{_SHORT}\s+(?:stop|halt|standstill))\b",
     re.I,
 )
-"""A pause's length said without a count: "for a while", "for some time", "briefly", "a brief stop"."""
+"""A pause's length said without a count: "for a while", "briefly", "wait a moment", "a brief hover",
+"build in a short stop" (a short stop with a verb that adds it: "come to a quick stop" ends the path)."""
 SOME_TIME_STEPS = 10
 """The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)

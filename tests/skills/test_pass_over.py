@@ -59,3 +59,13 @@ def test_a_stated_clearance_is_the_height_above_the_point() -> None:
     above, off = _over(pass_over(_line(), [0.5, 0.0, 0.0], clearance=0.3), np.array([0.5, 0.0, 0.0]))
     assert above == pytest.approx(0.3, abs=0.03)
     assert off < 0.03
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(0.3, 0.7), st.floats(-0.1, 0.1), st.floats(-0.15, 0.05), st.floats(0.05, 0.2))
+def test_a_stated_clearance_is_kept_all_the_way_over(x: float, y: float, z: float, gap: float) -> None:
+    """The shoulders of the bend, lower and horizontally near the point, keep the stated gap too."""
+    path, centre = _line(), np.array([x, y, z])
+    adapted = pass_over(path, centre, clearance=gap)
+    assert np.linalg.norm(adapted[:, :3] - centre, axis=1).min() >= gap - 1e-9
+    assert np.allclose(adapted[[0, -1]], path[[0, -1]])

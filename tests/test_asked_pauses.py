@@ -51,6 +51,9 @@ def test_a_pause_its_place_and_its_count(words: str, place: str, steps: int, is_
         "stop for 5 timesteps",  # no place
         "wait 3 timesteps between the vase and the cup",  # two places
         "come to a quick stop at the vase",  # a quick stop with no verb that adds it ends the path
+        "stop at the vase in a moment",  # when, not how long
+        "halt by the vase after a while",
+        "come down in a quick stop at the vase",
     ],
 )
 def test_no_count_no_pause_word_or_no_one_place_asks_no_pause(words: str) -> None:

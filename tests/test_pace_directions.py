@@ -57,8 +57,24 @@ def test_in_the_whole_stage_the_crossed_paces_come_out_the_asked_way():
         ("don't go faster near the kettle", (near(0.8, "kettle"),)),
         # one clause, two ways
         ("faster near the kettle rather than slower", (near(0.65, "kettle"),)),
+        # a pace compared, not asked one way; a factor the clause states
+        ("go half as fast near the kettle", (near(0.5, "kettle"),)),
+        ("twice as slow near the kettle, please", (near(0.5, "kettle"),)),
+        # the pace placed elsewhere than by the object named
+        ("slow down everywhere except near the kettle", (near(1.54, "kettle"),)),
+        ("speed up once you're clear of the lamp", (near(0.7, "lamp"),)),
     ],
-    ids=["agreeing", "pointing-back", "torn", "negated", "both-ways"],
+    ids=[
+        "agreeing",
+        "pointing-back",
+        "torn",
+        "negated",
+        "both-ways",
+        "compared",
+        "stated",
+        "except",
+        "clear-of",
+    ],
 )
 def test_other_programs_are_left_as_written(words, steps):
     code = program(*steps)

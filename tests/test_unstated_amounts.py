@@ -154,6 +154,10 @@ def test_a_made_up_speed_factor_becomes_the_phrase_tables(
         ("twice as fast", "t = scale_speed(t, 2.0)"),
         ("half as fast near the box", "t = scale_speed(t, 0.5, near=detect_objects('box'))"),
         ("four times slower", "t = scale_speed(t, 0.25)"),
+        # a percentage with no way beside it keeps either reading
+        ("go 30% less fast", "t = scale_speed(t, 0.7)"),
+        ("run 50% as fast", "t = scale_speed(t, 0.5)"),
+        ("it is too slow: add 30% to the speed", "t = scale_speed(t, 1.3)"),
     ],
 )
 def test_stated_speed_factors_stay(instruction: str, step: str) -> None:

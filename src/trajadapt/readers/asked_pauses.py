@@ -51,14 +51,17 @@ _SHORT = r"(?:brief|short|quick|momentary|little)"
 SOME_TIME = re.compile(
     r"\b(?:for\s+(?:a\s+(?:little\s+|short\s+|brief\s+)?(?:while|moment|bit|time|period(?:\s+of\s+time)?)"
     r"|some\s+(?:time|moments?)|a\s+few\s+(?:moments|seconds|instants))|briefly|momentarily"
-    r"|a\s+(?:little\s+|short\s+|brief\s+)?(?:moment|while|beat|spell)"
+    r"|(?:wait|paus|hold|hover|linger|stay|rest|stop|halt|freez|idl|dwell)\w*(?:\s+(?:it|there|still|here|on)){0,2}"
+    r"\s+a\s+(?:little\s+|short\s+|brief\s+)?(?:moment|while|beat|spell)(?!\s+(?:ago|later|earlier))"
     rf"|an?\s+{_SHORT}\s+(?:pause|wait|hold|breather|hover|dwell|rest|break)"
-    r"|(?:make|take|have|do|add|build|insert|put|includ|fit|work|schedul)\w*(?:\s+in)?\s+an?\s+"
-    rf"{_SHORT}\s+(?:stop|halt|standstill))\b",
+    r"|(?:make|makes|made|making|take|takes|took|taking|have|has|had|do|does|did|add|adds|added|adding"
+    r"|build|builds|building|insert\w*|put|puts|putting|includ\w*|fit|fits|fitting|work|schedul\w*)"
+    rf"(?:\s+in)?\s+an?\s+{_SHORT}\s+(?:stop|halt|standstill))\b",
     re.I,
 )
-"""A pause's length said without a count: "for a while", "briefly", "wait a moment", "a brief hover",
-"build in a short stop" (a short stop with a verb that adds it: "come to a quick stop" ends the path)."""
+"""A pause's length said without a count: "for a while", "briefly", "wait a moment" (right after the
+word for pausing: "stop at the vase in a moment" is no pause), "a brief hover", "build in a short
+stop" (a short stop with a verb that adds it: "come to a quick stop" ends the path)."""
 SOME_TIME_STEPS = 10
 """The timesteps of a pause said without a count."""
 POINTING_BACK = re.compile(r"\b(?:there|it|that spot|that point|the same place)\b", re.I)

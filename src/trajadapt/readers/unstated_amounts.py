@@ -36,6 +36,7 @@ from trajadapt.readers.paces import AT_LEAST, STOP_RAMP_START, speed_factor, sta
 from trajadapt.readers.words import (
     FASTER,
     INTENSITY,
+    NUMBER_TEXT,
     SLOWER,
     SPEED_UNIT,
     intensity_word,
@@ -56,8 +57,8 @@ RADII = ("radius",)  # how far a speed change reaches: a number, not an amount w
 def is_stated_factor(value: float, numbers: list[float], faster: bool | None = None) -> bool:
     """Whether a speed factor comes from the user's numbers: n, 1/n, or 1 +- n% ('20% faster').
 
-    ``faster``: the direction the words ask, when they ask one; a percentage then counts only in it
-    ("30% faster" states 1.3, not 0.7).
+    ``faster``: the way the words say their percentages go (``percent_way``); a percentage then
+    counts only that way ("30% faster" states 1.3, not 0.7).
     """
     candidates = list(numbers) + [1 / n for n in numbers if n]
     if faster is not False:
@@ -155,6 +156,25 @@ def _replace_in_line(line: str, numbers: list[float], word: str | None) -> tuple
     return ast.unparse(tree), "amount word" if any(_amount_word(node) for node in replaced) else "number"
 
 
+PERCENT_AND_WAY = re.compile(
+    rf"{NUMBER_TEXT}\s*(?:%|per\s*cent\b)\s+(\w+)"
+    rf"|(\w+)\s+by\s+(?:about\s+|roughly\s+|some\s+)?{NUMBER_TEXT}\s*(?:%|per\s*cent\b)",
+    re.I,
+)
+"""A percentage with the word of its way beside it: "30% quicker", "slower by 20 percent"."""
+
+
+def percent_way(words: str) -> bool | None:
+    """The one way the words' percentages go, said beside them (True: faster), or None."""
+    ways = set()
+    for found in PERCENT_AND_WAY.finditer(words):
+        word = found.group(1) or found.group(2)
+        if not (FASTER.fullmatch(word) or SLOWER.fullmatch(word)):
+            return None
+        ways.add(bool(FASTER.fullmatch(word)))
+    return ways.pop() if len(ways) == 1 else None
+
+
 def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str, bool] | None:
     """The line with a made-up speed factor replaced, and whether the words stated the new one.
 
@@ -176,8 +196,7 @@ def _calibrate_factor(line: str, numbers: list[float], words: str) -> tuple[str,
         faster, slower = bool(FASTER.search(words)), bool(SLOWER.search(words))
         asked = faster if faster != slower else value > 1
         stated = stated_factor(words, asked)
-        one_way = asked if faster != slower else None
-        if is_stated_factor(float(value), numbers, one_way) and (
+        if is_stated_factor(float(value), numbers, percent_way(words)) and (
             stated is None or AT_LEAST.search(words) is None
         ):
             continue

@@ -23,9 +23,8 @@ A limit (a clearance, a height bound) keeps its promise only when no move runs a
 
 "Smooth out the wiggles and bring it nearer to the quill" came back as ``smooth`` then
 ``move_closer``, and the move's bend left the path rougher than the original. A smoothing keeps its
-promise only when nothing reshapes the path after it: ``smoothing_last`` runs it after the moves and
-passes beside it (a limit still runs after the smoothing: a smoothing after a clearance pulls the
-path back into it).
+promise only when nothing reshapes the path after it: ``smoothing_last`` runs it after the moves
+beside it (a limit, a pass or a weave still runs after the smoothing, which would blunt them).
 """
 
 from __future__ import annotations
@@ -256,18 +255,21 @@ def _has_keyword(statement: ast.stmt, name: str) -> bool:
 
 SMOOTHING = frozenset({"smooth"})
 """Steps that smooth the path out: a move after them brings its bends back."""
+RESHAPING = MOVES | frozenset({"rotate", "scale_about"})
+"""Moves a smoothing runs after. Not a pass, a weave or a curve asked more (``pass_through``,
+``pass_over``, ``zigzag``, ``exaggerate_curve``): each is a shape asked on purpose, which a smoothing
+after it would blunt (a pass would miss its point, a stated gap over an object close in)."""
 
 
 def smoothing_last(tree: ast.Module) -> list[str]:
     """Run the smoothing steps after the moves and passes that follow them (see the module).
 
     Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable made of
-    ``SMOOTHING``, ``MOVES``, ``PASSES``, ``FREE_MOVES`` and ``SPEEDS`` steps only, where a move
-    or pass follows a smoothing: the smoothings go to the end of the run. A limit step ends a run,
-    so it stays after the smoothing (run this after ``limits_last``).
+    ``SMOOTHING``, ``RESHAPING`` and ``SPEEDS`` steps only, where a move follows a smoothing: the
+    smoothings go to the end of the run. A limit step or a pass ends a run, so it stays after the
+    smoothing (run this after ``limits_last``).
 
     Returns:
         One note per step moved.
     """
-    reshaping = (MOVES | PASSES | FREE_MOVES) - SMOOTHING
-    return _last_in_their_runs(tree, SMOOTHING, reshaping, "the path it leaves is smooth")
+    return _last_in_their_runs(tree, SMOOTHING, RESHAPING, "the path it leaves is smooth")

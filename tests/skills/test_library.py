@@ -279,13 +279,14 @@ def test_going_on_keeps_the_pace_the_path_arrives_with() -> None:
     t = curve()
     t[:, 3] = np.linspace(1.0, 0.0, N)  # fastest at the start, slowing to rest at the goal
     longer = events.extend(t, 0.2)
-    arrival = t[-2, 3]
-    assert np.allclose(longer[N - 1 : -1, 3], arrival) and longer[-1, 3] == 0
-    assert longer[:, 3].mean() < t[:, 3].mean()  # going on adds no spell at the top speed
+    pace = longer[N, 3]
+    assert np.allclose(longer[N - 1 : -1, 3], pace) and longer[-1, 3] == 0
+    assert 0.1 < pace < 0.5  # the pace of its final approach: no spell at the top speed, no crawl
+    cruise = np.r_[np.full(N - 8, 0.8), np.linspace(0.8, 0.0, 8)]  # slows over its last waypoints
+    t[:, 3] = cruise
+    assert np.isclose(events.going_on_pace(t), 0.8)
     t[:, 3] = 0.5
     assert np.allclose(events.extend(t, 0.2)[N - 1 : -1, 3], 0.5)  # not at rest: its own speed
-    t[:, 3] = 0.0
-    assert events.going_on_pace(t) == 0.0
 
 
 def test_spiral_and_circle() -> None:
@@ -353,6 +354,10 @@ def test_smoothing_at_its_default_strength_takes_out_most_of_a_wiggle() -> None:
 
     smoothed = shape.smooth(t)
     assert roughness(smoothed) < 0.5 * roughness(t) and np.allclose(smoothed[[0, -1]], t[[0, -1]])
+    paused = events.wait(t, "middle", 10)
+    still = shape.smooth(paused)
+    pause = paused[:, 3] == 0
+    assert np.array_equal(still[pause], paused[pause])  # a pause stays a pause
 
 
 def test_every_skill_is_documented_and_listed() -> None:

@@ -69,3 +69,11 @@ def test_a_stated_clearance_is_kept_all_the_way_over(x: float, y: float, z: floa
     adapted = pass_over(path, centre, clearance=gap)
     assert np.linalg.norm(adapted[:, :3] - centre, axis=1).min() >= gap - 1e-9
     assert np.allclose(adapted[[0, -1]], path[[0, -1]])
+
+
+def test_a_stated_gap_near_an_end_leaves_no_cliff_beside_it() -> None:
+    path = np.stack([np.linspace(0.0, 1.0, 40), np.zeros(40), np.zeros(40), np.ones(40)], axis=1)
+    adapted = pass_over(path, np.array([0.97, 0.02, 0.0]), clearance=0.1)
+    spacing = np.linalg.norm(np.diff(path[:, :3], axis=0), axis=1).max()
+    assert np.allclose(adapted[[0, -1]], path[[0, -1]])
+    assert np.linalg.norm(np.diff(adapted[:, :3], axis=0), axis=1).max() < 2.5 * spacing

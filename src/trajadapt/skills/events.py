@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent
+from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent, progress
 from trajadapt.skills.core import (
     DirectionArg,
     DistanceArg,
@@ -143,17 +143,29 @@ def append_segment(trajectory: TrajectoryArg, point: PointArg, count: int = 10) 
     return np.vstack([moving, segment])
 
 
+APPROACH_SHARE = 0.2
+"""How far back (share of the path) the pace a path arrives with is looked for: a path slowing the
+whole way would otherwise go on at its top speed, and one slowing over its last waypoints at a crawl."""
+
+
 def going_on_pace(trajectory: Array) -> float:
     """The pace a path goes on at past its goal: its speed at the goal, or the pace it arrives with.
 
-    A path that comes to rest at its goal goes on at the speed of its last moving waypoint (the pace
-    of its approach, not its top speed elsewhere); one with no moving waypoint, at its top speed.
+    A path that comes to rest at its goal goes on at the speed its final slowing began with, looked
+    for at most ``APPROACH_SHARE`` of the path back from its last moving waypoint (not its top speed
+    elsewhere, nor the crawl of its last waypoint); one with no moving waypoint, at its top speed.
     """
     speeds = trajectory[:, 3]
     if speeds[-1] > 0:
         return float(speeds[-1])
     moving = np.flatnonzero(speeds[:-1] > 0)
-    return float(speeds[moving[-1]] if moving.size else speeds.max())
+    if not moving.size:
+        return float(speeds.max())
+    s = progress(trajectory)
+    k = int(moving[-1])
+    while k > 0 and speeds[k - 1] >= speeds[k] and s[moving[-1]] - s[k - 1] <= APPROACH_SHARE:
+        k -= 1
+    return float(speeds[k])
 
 
 def spiral(

@@ -53,9 +53,17 @@ def _fraction(amount: Any) -> float:
 
 def _weight(t: Array, point: Array) -> Array:
     """Strongest at the waypoint nearest the object, fading along the path; 0 at start and goal."""
+    return proximity(t, point, INFLUENCE * extent(t)) * _away_from_the_ends(t)
+
+
+ENDS_FADE = 0.1
+"""The share of the path at each end over which a move by an object fades in (the ends stay)."""
+
+
+def _away_from_the_ends(t: Array) -> Array:
+    """0 at the start and the goal, rising smoothly to 1 within ``ENDS_FADE`` of the path."""
     s = progress(t)
-    ends = smoothstep(s / 0.1) * smoothstep((1.0 - s) / 0.1)
-    return proximity(t, point, INFLUENCE * extent(t)) * ends
+    return smoothstep(s / ENDS_FADE) * smoothstep((1.0 - s) / ENDS_FADE)
 
 
 def _where(t: Array, point: Array, part: PartArg) -> Array:
@@ -334,7 +342,8 @@ def pass_over(trajectory: TrajectoryArg, points: PointsArg, clearance: DistanceA
     Bend the path so that it passes right over each point (horizontally through it, clearance above
     it; default a tenth of the path's size), e.g. to hop over objects. Start and goal stay. Without a
     stated clearance the pass is never lower than the path already flies there: a path raised
-    before ("raise the whole flight by 30 cm, fly over the keyboard") keeps its height.
+    before ("raise the whole flight by 30 cm, fly over the keyboard") keeps its height; with one, no
+    waypoint above the point comes nearer it than that, away from the ends.
     """
     t = as_trajectory(trajectory)
     height = OVER_CLEARANCE * extent(t) if clearance is None else resolve_amount(clearance, t)
@@ -353,14 +362,18 @@ def _over_the_domes(t: Array, centres: list[Array], clearance: float) -> Array:
     """``t`` with each inner waypoint above a centre and nearer than ``clearance`` lifted onto its dome.
 
     The bend passes ``clearance`` above the point, but its shoulders, lower and horizontally near it,
-    came closer ("go over the toad, leaving a gap of at least 100 mm" passed at 0.093).
+    came closer ("go over the toad, leaving a gap of at least 100 mm" passed at 0.093). The lift fades
+    out within ``ENDS_FADE`` of each end, which stays where it is.
     """
     out = t.copy()
+    fade = _away_from_the_ends(t)  # no cliff beside a kept end inside a dome
     for centre in centres:
-        across = np.linalg.norm(out[1:-1, :2] - centre[:2], axis=1)
-        inside = (across < clearance) & (out[1:-1, 2] >= centre[2])
+        across = np.linalg.norm(out[:, :2] - centre[:2], axis=1)
         dome = centre[2] + np.sqrt(np.clip(clearance**2 - across**2, 0.0, None))
-        out[1:-1, 2] = np.where(inside, np.maximum(out[1:-1, 2], dome), out[1:-1, 2])
+        lift = np.where(
+            (across < clearance) & (out[:, 2] >= centre[2]), np.clip(dome - out[:, 2], 0.0, None), 0.0
+        )
+        out[:, 2] += lift * fade
     return out
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from trajadapt.model.geometry import PAPER_AXES, Array, Axes, extent, progress
 from trajadapt.skills.core import (
@@ -277,7 +278,7 @@ With one in twenty, a wiggle 8 waypoints long kept three quarters of its roughne
 
 
 def smooth(trajectory: TrajectoryArg, strength: float = 0.5) -> Array:
-    """Round off sharp turns and jitter (strength 0..1); start and goal stay; speeds smoothed too."""
+    """Round off sharp turns and jitter (strength 0..1); start, goal and pauses stay; speeds smoothed too."""
     t = as_trajectory(trajectory)
     sigma = max(float(strength), 0.0) * max(len(t) / SMOOTHING_SPAN, 1.0)
     if sigma <= 0:
@@ -289,7 +290,17 @@ def smooth(trajectory: TrajectoryArg, strength: float = 0.5) -> Array:
     smoothed = np.stack([np.convolve(padded[:, k], kernel, mode="valid") for k in range(4)], axis=1)
     smoothed[:, 3] = np.maximum(smoothed[:, 3], 0.0)
     smoothed[[0, -1]] = t[[0, -1]]
+    paused = _paused(t)
+    smoothed[paused] = t[paused]
     return smoothed
+
+
+def _paused(t: Array) -> npt.NDArray[np.bool_]:
+    """Waypoints of a pause: at rest where a neighbour stands at the same place."""
+    same = np.all(np.isclose(t[1:, :3], t[:-1, :3]), axis=1)
+    beside = np.r_[same, False] | np.r_[False, same]
+    paused: npt.NDArray[np.bool_] = (t[:, 3] <= 0) & beside
+    return paused
 
 
 def resample(trajectory: TrajectoryArg, count: int) -> Array:

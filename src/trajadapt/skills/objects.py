@@ -56,8 +56,7 @@ def _weight(t: Array, point: Array) -> Array:
     return proximity(t, point, INFLUENCE * extent(t)) * _away_from_the_ends(t)
 
 
-ENDS_FADE = 0.1
-"""The share of the path at each end over which a move by an object fades in (the ends stay)."""
+ENDS_FADE = 0.1  # the share of the path at each end over which a move by an object fades in
 
 
 def _away_from_the_ends(t: Array) -> Array:

@@ -262,7 +262,7 @@ after it would blunt (a pass would miss its point, a stated gap over an object c
 
 
 def smoothing_last(tree: ast.Module) -> list[str]:
-    """Run the smoothing steps after the moves and passes that follow them (see the module).
+    """Run the smoothing steps after the moves that follow them (see the module).
 
     Applies to a run of consecutive ``t = skill(t, ...)`` statements on one variable made of
     ``SMOOTHING``, ``RESHAPING`` and ``SPEEDS`` steps only, where a move follows a smoothing: the

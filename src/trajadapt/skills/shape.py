@@ -278,7 +278,10 @@ With one in twenty, a wiggle 8 waypoints long kept three quarters of its roughne
 
 
 def smooth(trajectory: TrajectoryArg, strength: float = 0.5) -> Array:
-    """Round off sharp turns and jitter (strength 0..1); start, goal and pauses stay; speeds smoothed too."""
+    """Round off sharp turns and jitter (strength 0..1); start and goal stay; speeds smoothed too.
+
+    A pause (waypoints at rest beside their twin) stays where it is, a standstill.
+    """
     t = as_trajectory(trajectory)
     sigma = max(float(strength), 0.0) * max(len(t) / SMOOTHING_SPAN, 1.0)
     if sigma <= 0:

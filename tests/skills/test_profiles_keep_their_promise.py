@@ -1,7 +1,7 @@
 """Property tests: a speed profile changes the speed in the direction its name says, wherever it applies."""
 
 import numpy as np
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from trajadapt.skills.speed import speed_profile
@@ -37,6 +37,7 @@ def test_decelerating_slows_every_waypoint_of_its_part_by_the_ramp_and_never_ris
 
 @settings(max_examples=100, deadline=None)
 @given(speeds, st.integers(0, 50), st.floats(0.0, 0.6))
+@example([1.0, 0.0625, 1.0, 1.0], 0, 5e-324)  # a ramp from a hair past a rest at the start
 def test_decelerating_past_a_rest_still_moves_and_stops_at_the_goal(values, rest, start):
     values = list(values) + [1.0, 1.0]
     values[rest % (len(values) - 2)] = 0.0  # at rest somewhere before the goal

@@ -221,8 +221,12 @@ def speed_profile(
 
 
 def _last_rest(t: Array, s: Array, begin: float) -> int | None:
-    """The index of the path's last waypoint at rest at ``begin`` or after it, before its goal, if any."""
-    resting = np.flatnonzero((s >= begin) & (t[:, 3] <= 1e-9))
+    """The index of the path's last waypoint at rest at ``begin`` or after it, before its goal, if any.
+
+    "At ``begin``" allows for rounding: a ramp starting 5e-324 along a path at rest at its start began
+    from that rest's speed, 0, and held the whole path at 0.
+    """
+    resting = np.flatnonzero((s >= begin - 1e-9) & (t[:, 3] <= 1e-9))
     resting = resting[resting < len(t) - 1]
     return int(resting[-1]) if len(resting) else None
 

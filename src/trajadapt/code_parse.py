@@ -88,6 +88,14 @@ def named_argument(call: ast.Call, name: str, position: int) -> ast.expr | None:
     return keyword if keyword is not None else call.args[position] if len(call.args) > position else None
 
 
+def written_factor(call: ast.Call) -> tuple[ast.Constant, float] | None:
+    """A ``scale_speed`` factor (second argument or ``factor=``) written as a plain number, and its value."""
+    node = named_argument(call, "factor", 1)
+    if not isinstance(node, ast.Constant) or (value := signed_number(node)) is None:
+        return None
+    return node, value
+
+
 def extension_direction(call: ast.Call | None) -> str | None:
     """The canonical direction an ``extend`` call gives (third argument or ``direction=``), if a word."""
     node = None if call is None else named_argument(call, "direction", 2)

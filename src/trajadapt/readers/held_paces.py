@@ -19,7 +19,7 @@ import ast
 import math
 from collections.abc import Iterable
 
-from trajadapt.code_parse import assigned_call, in_place_of, named_argument, placed_near
+from trajadapt.code_parse import assigned_call, in_place_of, placed_near, written_factor
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import stated_factor
 from trajadapt.readers.words import names_in, part_named
@@ -54,14 +54,8 @@ def hold_stated_paces(code: str, asked: Iterable[str], names: Iterable[str]) -> 
 
 def _factor(call: ast.Call) -> float | None:
     """The factor a ``scale_speed`` call writes as a plain number (second argument or ``factor=``)."""
-    node = named_argument(call, "factor", 1)
-    if (
-        isinstance(node, ast.Constant)
-        and isinstance(node.value, int | float)
-        and not isinstance(node.value, bool)
-    ):
-        return float(node.value)
-    return None
+    written = written_factor(call)
+    return written[1] if written is not None else None
 
 
 def _clauses_of(name: str, clauses: tuple[str, ...], names: list[str]) -> list[str]:

@@ -20,14 +20,7 @@ import ast
 import re
 from collections.abc import Iterable
 
-from trajadapt.code_parse import (
-    assigned_call,
-    in_place_of,
-    named_argument,
-    placed_near,
-    signed_number,
-    skill_program,
-)
+from trajadapt.code_parse import assigned_call, in_place_of, placed_near, skill_program, written_factor
 from trajadapt.readers.clause_split import split_clauses
 from trajadapt.readers.paces import PERCENT, speed_factor, stated_factor
 from trajadapt.readers.request_words import is_statement
@@ -94,7 +87,5 @@ def asked_paces_near(words: str, names: list[str]) -> dict[str, tuple[bool, str]
 
 def _literal_factor(call: ast.Call) -> tuple[ast.Constant, float] | None:
     """A ``scale_speed`` call's factor and its value, when it is written as a plain positive number."""
-    node = named_argument(call, "factor", 1)
-    if not isinstance(node, ast.Constant) or (value := signed_number(node)) is None or value <= 0:
-        return None
-    return node, value
+    written = written_factor(call)
+    return written if written is not None and written[1] > 0 else None
